@@ -1,0 +1,1 @@
+list(APPEND PL_ENGINE_SOURCES src/core/status.c src/core/hash.c)

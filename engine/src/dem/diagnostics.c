@@ -1,0 +1,118 @@
+/* Read-only diagnostics: energies, momentum, contacts, bounds and the state hash. */
+#include "dem/world_internal.h"
+#include <math.h>
+#include <string.h>
+
+double pl__kinetic_energy(const pl_world *w) {
+    double e = 0;
+    for (int i = 0; i < w->n; i++) {
+        if (w->motion[i] != PL_MOTION_DYNAMIC) continue;
+        e += 0.5 * w->mass[i] * (w->vel[i].x * w->vel[i].x + w->vel[i].y * w->vel[i].y) +
+             0.5 * w->inertia[i] * w->omega[i] * w->omega[i];
+    }
+    return e;
+}
+
+double pl__gravitational_energy(const pl_world *w) {
+    double e = 0;
+    for (int i = 0; i < w->n; i++)
+        if (w->motion[i] == PL_MOTION_DYNAMIC)
+            e -= w->mass[i] * (w->def.gravity.x * w->pos[i].x + w->def.gravity.y * w->pos[i].y);
+    return e;
+}
+
+double pl__elastic_energy(const pl_world *w) {
+    double e = 0;
+    for (int k = 0; k < w->pair_n; k++)
+        if (w->pairs[k].touching) e += w->pairs[k].elastic;
+    return e;
+}
+
+pl_energy pl_world_energy(const pl_world *w) {
+    pl_energy e;
+    e.kinetic = pl__kinetic_energy(w);
+    e.gravitational = pl__gravitational_energy(w);
+    e.elastic = pl__elastic_energy(w);
+    e.damped = w->e_damped;
+    e.friction = w->e_friction;
+    e.external = w->e_external;
+    e.balance = e.kinetic + e.gravitational + e.elastic + e.damped + e.friction - e.external -
+                (w->energy_initialised ? w->e_initial : e.kinetic + e.gravitational + e.elastic + e.damped +
+                                                            e.friction - e.external);
+    return e;
+}
+
+pl_vec2 pl_world_momentum(const pl_world *w) {
+    pl_vec2 p = {0, 0};
+    for (int i = 0; i < w->n; i++)
+        if (w->motion[i] == PL_MOTION_DYNAMIC) {
+            p.x += w->mass[i] * w->vel[i].x;
+            p.y += w->mass[i] * w->vel[i].y;
+        }
+    return p;
+}
+
+int pl_world_contact_count(const pl_world *w) {
+    int c = 0;
+    for (int k = 0; k < w->pair_n; k++) c += w->pairs[k].touching;
+    return c;
+}
+
+int pl_world_copy_contacts(const pl_world *w, pl_contact_info *out, int cap) {
+    int c = 0;
+    for (int k = 0; k < w->pair_n && c < cap; k++) {
+        const pl_pair *p = &w->pairs[k];
+        if (!p->touching) continue;
+        out[c].a = p->a;
+        out[c].b = p->b;
+        out[c].point = p->point;
+        out[c].normal = p->normal;
+        out[c].fn = p->fn;
+        out[c].ft = p->ft;
+        out[c].overlap = p->overlap;
+        c++;
+    }
+    return c;
+}
+
+void pl_world_bounds(const pl_world *w, pl_vec2 *lo, pl_vec2 *hi) {
+    pl_vec2 l = {INFINITY, INFINITY}, h = {-INFINITY, -INFINITY};
+    for (int i = 0; i < w->n; i++) {
+        if (w->vert_count[i]) {
+            const pl_vec2 *v = &w->verts_world[w->vert_offset[i]];
+            for (int k = 0; k < w->vert_count[i]; k++) {
+                l.x = fmin(l.x, v[k].x);
+                l.y = fmin(l.y, v[k].y);
+                h.x = fmax(h.x, v[k].x);
+                h.y = fmax(h.y, v[k].y);
+            }
+        } else {
+            l.x = fmin(l.x, w->pos[i].x - w->radius[i]);
+            l.y = fmin(l.y, w->pos[i].y - w->radius[i]);
+            h.x = fmax(h.x, w->pos[i].x + w->radius[i]);
+            h.y = fmax(h.y, w->pos[i].y + w->radius[i]);
+        }
+    }
+    if (!isfinite(l.x)) l = h = (pl_vec2){0, 0};
+    *lo = l;
+    *hi = h;
+}
+
+uint64_t pl_world_state_hash(const pl_world *w) {
+    uint64_t h = PL_HASH_SEED;
+    h = pl_hash_bytes(h, &w->time, sizeof w->time);
+    h = pl_hash_bytes(h, &w->step, sizeof w->step);
+    h = pl_hash_bytes(h, w->pos, (size_t)w->n * sizeof *w->pos);
+    h = pl_hash_bytes(h, w->vel, (size_t)w->n * sizeof *w->vel);
+    h = pl_hash_bytes(h, w->angle, (size_t)w->n * sizeof *w->angle);
+    h = pl_hash_bytes(h, w->omega, (size_t)w->n * sizeof *w->omega);
+    for (int k = 0; k < w->pair_n; k++) {
+        const pl_pair *p = &w->pairs[k];
+        if (!p->touching) continue;
+        h = pl_hash_bytes(h, &p->a, sizeof p->a);
+        h = pl_hash_bytes(h, &p->b, sizeof p->b);
+        h = pl_hash_bytes(h, &p->fs, sizeof p->fs);
+        h = pl_hash_bytes(h, &p->area_prev, sizeof p->area_prev);
+    }
+    return h;
+}

@@ -1,0 +1,133 @@
+/* Flags with the MIMES names (seed 000 Appendix B.2 and the Appendix C scripts).
+ * Each flag has a unit, a valid range and a default; flags of features that are not built
+ * yet are recognised and refused (unless set to their default "off" value). */
+#include "dem/world_internal.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct flag_row {
+    pl_flag_info info;
+    double def;
+} flag_row;
+
+/* The order is the index into w->flag_values. */
+static const flag_row FLAGS[] = {
+    /* run control */
+    {{"TIMESTEPS", "steps", "number of time steps a declarative run takes (when the command line gives none)", 0, 1e12, 1}, 0},
+    {{"PRINT_INT", "steps", "steps between output frames (when the command line gives neither --fps nor --every)", 1, 1e12, 1}, 0},
+    {{"MAX_DT_CR", "s", "cap on the time step (the automatic step is min(safety x critical, MAX_DT_CR)); 0 = no cap", 0, 1e6, 1}, 0},
+    {{"DT", "s", "fixed time step; 0 = automatic (DT_SAFETY x critical step)", 0, 1e6, 1}, 0},
+    {{"DT_SAFETY", "1", "fraction of the critical time step used by the automatic step", 1e-6, 1, 1}, 0.1},
+    /* body forces and damping */
+    {{"GRAVITY_X", "m/s^2", "gravity, x component", -1e6, 1e6, 1}, 0},
+    {{"GRAVITY_Y", "m/s^2", "gravity, y component", -1e6, 1e6, 1}, -9.81},
+    {{"RAYLEIGH_FACTOR", "1/s", "mass-proportional damping alpha of the Rege scheme (seed 000 eq. 2.5)", 0, 1e9, 1}, 0},
+    {{"GLOBAL_DAMPING", "N s/m", "translational global damping C (seed 003 eq. 2.21)", 0, 1e30, 1}, 0},
+    {{"GLOBAL_DAMPING_ROT", "N m s", "rotational global damping C* (seed 003 eq. 2.22)", 0, 1e30, 1}, 0},
+    {{"LOCAL_DAMPING", "1", "non-viscous damping ratio proportional to the resultant force (seed 002 eqs. 24-29)", 0, 1, 1}, 0},
+    /* fluid (seed 000 Appendix B.2) */
+    {{"FLUIDS_ON", "0/1", "turns the pore-fluid model on (1) or off (0)", 0, 1, 0}, 0},
+    {{"FIRST_STEP_STATIC", "0/1", "start the transient fluid solution from the static solution", 0, 1, 0}, 0},
+    {{"FLUID_PERM", "0/1", "0: one permeability everywhere; 1: per element from the local void ratio", 0, 1, 0}, 0},
+    {{"FLUID_PERM_LOW", "m/s", "lowest element permeability (clamp)", 0, 1e30, 0}, 0.001},
+    {{"FLUID_PERM_HIGH", "m/s", "highest element permeability (clamp)", 0, 1e30, 0}, 5.0},
+    {{"FLUID_SOLVE_TIMESTEPS", "steps", "grain steps between fluid solutions", 1, 1e12, 0}, 1},
+    {{"FLUID_DENSITY", "kg/m^3", "density of the pore fluid", 0, 1e30, 0}, 1000},
+    {{"FLUID_GEOMETRY_FLAG", "0/1", "write the fluid mesh geometry to FLUID_GEOMETRY_FILENAME", 0, 1, 0}, 0},
+    {{"FLUID_PRESSURES_FLAG", "0/1", "write the fluid pressures over time to FLUID_PRESSURES_FILENAME", 0, 1, 0}, 0},
+    /* MIMES output flags that porelab replaces with VTK/PNG output */
+    {{"EXODUSFLAG", "0/1", "EXODUS output of MIMES: not built (porelab writes VTK .vtu/.pvd and PNG instead)", 0, 1, 0}, 0},
+    {{"EXODUSOUTPUTSTEP", "steps", "EXODUS output interval of MIMES: not built (use PRINT_INT)", 0, 1e12, 0}, 0},
+};
+#define NFLAGS ((int)(sizeof FLAGS / sizeof FLAGS[0]))
+
+/* Features built at run time by modules that register themselves (the fluid module marks
+   its flags built). */
+static int g_built_override[NFLAGS];
+
+int pl_flag_count(void) { return NFLAGS; }
+
+const pl_flag_info *pl_flag_at(int i) {
+    static pl_flag_info copy[NFLAGS];
+    if (i < 0 || i >= NFLAGS) return NULL;
+    copy[i] = FLAGS[i].info;
+    copy[i].built = FLAGS[i].info.built || g_built_override[i];
+    return &copy[i];
+}
+
+static int find_flag(const char *name) {
+    for (int i = 0; i < NFLAGS; i++)
+        if (strcmp(FLAGS[i].info.name, name) == 0) return i;
+    return -1;
+}
+
+void pl__flags_mark_built(const char *name) {
+    const int i = find_flag(name);
+    if (i >= 0) g_built_override[i] = 1;
+}
+
+void pl__flags_init(pl_world *w) {
+    w->flag_values = malloc(NFLAGS * sizeof *w->flag_values);
+    if (!w->flag_values) return;
+    for (int i = 0; i < NFLAGS; i++) w->flag_values[i] = FLAGS[i].def;
+    /* flags mirrored by the world definition */
+    w->flag_values[find_flag("GRAVITY_X")] = w->def.gravity.x;
+    w->flag_values[find_flag("GRAVITY_Y")] = w->def.gravity.y;
+    w->flag_values[find_flag("MAX_DT_CR")] = w->def.max_dt;
+    w->flag_values[find_flag("DT")] = w->def.dt;
+    w->flag_values[find_flag("DT_SAFETY")] = w->def.dt_safety;
+    w->flag_values[find_flag("RAYLEIGH_FACTOR")] = w->def.rayleigh_alpha;
+    w->flag_values[find_flag("GLOBAL_DAMPING")] = w->def.global_c;
+    w->flag_values[find_flag("GLOBAL_DAMPING_ROT")] = w->def.global_c_rot;
+    w->flag_values[find_flag("LOCAL_DAMPING")] = w->def.local_damping;
+}
+
+static void list_flags(char *buf, size_t len) {
+    size_t off = 0;
+    for (int i = 0; i < NFLAGS && off < len; i++)
+        off += (size_t)snprintf(buf + off, len - off, "%s%s", i ? ", " : "", FLAGS[i].info.name);
+}
+
+pl_status pl_world_set_flag(pl_world *w, const char *name, double v) {
+    const int i = name ? find_flag(name) : -1;
+    if (i < 0) {
+        char list[1024];
+        list_flags(list, sizeof list);
+        return pl__error(w, PL_ERR_UNKNOWN, "unknown flag '%s'; valid flags: %s", name ? name : "(null)", list);
+    }
+    const pl_flag_info *f = pl_flag_at(i);
+    if (!isfinite(v) || v < f->min || v > f->max)
+        return pl__error(w, PL_ERR_ARG, "flag %s must be in [%g, %g] %s (got %g)", f->name, f->min, f->max, f->unit, v);
+    if (!f->built && v != FLAGS[i].def)
+        return pl__error(w, PL_ERR_NOT_BUILT,
+                         "flag %s is recognised but its feature is not built in this version of porelab (%s); "
+                         "remove the line or leave it at %g",
+                         f->name, f->description, FLAGS[i].def);
+    w->flag_values[i] = v;
+    if (!strcmp(name, "GRAVITY_X")) w->def.gravity.x = v;
+    else if (!strcmp(name, "GRAVITY_Y")) w->def.gravity.y = v;
+    else if (!strcmp(name, "MAX_DT_CR")) w->def.max_dt = v;
+    else if (!strcmp(name, "DT")) w->def.dt = v;
+    else if (!strcmp(name, "DT_SAFETY")) w->def.dt_safety = v;
+    else if (!strcmp(name, "RAYLEIGH_FACTOR")) w->def.rayleigh_alpha = v;
+    else if (!strcmp(name, "GLOBAL_DAMPING")) w->def.global_c = v;
+    else if (!strcmp(name, "GLOBAL_DAMPING_ROT")) w->def.global_c_rot = v;
+    else if (!strcmp(name, "LOCAL_DAMPING")) w->def.local_damping = v;
+    w->dt = 0; /* recompute the step with the new settings */
+    w->energy_initialised = 0;
+    return PL_OK;
+}
+
+pl_status pl_world_get_flag(const pl_world *w, const char *name, double *v) {
+    const int i = name ? find_flag(name) : -1;
+    if (i < 0) {
+        char list[1024];
+        list_flags(list, sizeof list);
+        return pl__error((pl_world *)w, PL_ERR_UNKNOWN, "unknown flag '%s'; valid flags: %s", name ? name : "(null)",
+                         list);
+    }
+    *v = w->flag_values[i];
+    return PL_OK;
+}

@@ -1,0 +1,87 @@
+/* Stability guards: stop a run that goes unstable with a message naming what, where, when,
+ * the likely cause and the time step that would be safe. Checked after each step:
+ *   - non-finite position or velocity of a dynamic body,
+ *   - an overlap beyond max_overlap_ratio of the smaller radius,
+ *   - kinetic energy above energy_surge_ratio times all the energy that could have become
+ *     kinetic (initial kinetic + elastic, gravitational energy released, work supplied). */
+#include "dem/world_internal.h"
+#include <math.h>
+#include <stdio.h>
+
+static const char *shape_name(int s) {
+    return s == PL_SHAPE_DISC ? "disc" : s == PL_SHAPE_POLYGON ? "polygon" : "wall";
+}
+
+static void advice(pl_world *w, char *buf, size_t len) {
+    const double dt = w->dt;
+    pl_dt_report saved = w->dt_report;
+    const double dt_user = w->def.dt;
+    w->def.dt = 0;
+    pl__compute_dt(w);
+    const pl_dt_report r = w->dt_report;
+    w->def.dt = dt_user;
+    w->dt_report = saved;
+    w->dt = dt;
+    if (isfinite(r.dt_critical) && dt > 0.5 * r.dt_critical)
+        snprintf(buf, len,
+                 "likely cause: the time step %.3g s is %.2g times the critical step %.3g s (body %d, %s); "
+                 "a safe step is %.3g s (set dt = 0 for automatic, or dt <= %.3g)",
+                 dt, dt / r.dt_critical, r.dt_critical, r.limiting_body, r.limit_kind, 0.1 * r.dt_critical,
+                 0.1 * r.dt_critical);
+    else
+        snprintf(buf, len,
+                 "likely cause: bodies driven into each other faster than the springs can push back "
+                 "(stiffness too low for the loads or velocities, or bodies created overlapping); "
+                 "the time step %.3g s is below the critical step %.3g s, so raise kn or lower the loads/velocities",
+                 dt, r.dt_critical);
+}
+
+pl_status pl__check_guards(pl_world *w) {
+    char adv[512];
+    for (int i = 0; i < w->n; i++) {
+        if (w->motion[i] != PL_MOTION_DYNAMIC) continue;
+        if (!isfinite(w->pos[i].x) || !isfinite(w->pos[i].y) || !isfinite(w->vel[i].x) || !isfinite(w->vel[i].y) ||
+            !isfinite(w->omega[i]) || !isfinite(w->angle[i])) {
+            advice(w, adv, sizeof adv);
+            return pl__error(w, PL_ERR_UNSTABLE,
+                             "unstable: body %d (%s, material '%s') has a non-finite position or velocity at "
+                             "t = %.6g s (step %lld); %s",
+                             i, shape_name(w->shape[i]), w->materials[w->material[i]].name, w->time,
+                             (long long)w->step, adv);
+        }
+    }
+    if (w->worst_overlap_ratio > w->def.max_overlap_ratio) {
+        const int a = w->worst_a, b = w->worst_b;
+        advice(w, adv, sizeof adv);
+        return pl__error(w, PL_ERR_UNSTABLE,
+                         "unstable: bodies %d (%s) and %d (%s) overlap by %.0f%% of the smaller radius at t = %.6g s "
+                         "(step %lld, limit %.0f%%) near (%.4g, %.4g); %s",
+                         a, shape_name(w->shape[a]), b, shape_name(w->shape[b]), 100 * w->worst_overlap_ratio, w->time,
+                         (long long)w->step, 100 * w->def.max_overlap_ratio, w->pos[b].x, w->pos[b].y, adv);
+    }
+    if (w->step % 10 == 0) {
+        const double ke = pl__kinetic_energy(w);
+        const double supply = w->e_supply0 + (w->pe0 - pl__gravitational_energy(w)) + (w->e_external - w->ext0);
+        const double scale = fmax(fabs(supply), 1e-300);
+        if (ke > w->def.energy_surge_ratio * scale && ke > 0) {
+            /* find the fastest body to name it */
+            int worst = -1;
+            double vmax = -1;
+            for (int i = 0; i < w->n; i++) {
+                if (w->motion[i] != PL_MOTION_DYNAMIC) continue;
+                const double v = w->mass[i] * (w->vel[i].x * w->vel[i].x + w->vel[i].y * w->vel[i].y);
+                if (v > vmax) {
+                    vmax = v;
+                    worst = i;
+                }
+            }
+            advice(w, adv, sizeof adv);
+            return pl__error(w, PL_ERR_UNSTABLE,
+                             "unstable: kinetic energy %.4g J exceeds %.0f times the energy supplied (%.4g J) at "
+                             "t = %.6g s (step %lld); most energetic body %d at (%.4g, %.4g); %s",
+                             ke, w->def.energy_surge_ratio, supply, w->time, (long long)w->step, worst,
+                             worst >= 0 ? w->pos[worst].x : 0, worst >= 0 ? w->pos[worst].y : 0, adv);
+        }
+    }
+    return PL_OK;
+}

@@ -1,0 +1,13 @@
+list(APPEND PL_ENGINE_SOURCES
+  src/dem/world.c
+  src/dem/material.c
+  src/dem/body.c
+  src/dem/neighbor.c
+  src/dem/contact_disc.c
+  src/dem/contact_polygon.c
+  src/dem/contact_dispatch.c
+  src/dem/integrate.c
+  src/dem/timestep.c
+  src/dem/guards.c
+  src/dem/flags.c
+  src/dem/diagnostics.c)

@@ -1,0 +1,75 @@
+/* Critical time step (seed 003 §2.2.4.4): 2 sqrt(m/k) for a mass on a spring, reduced for a
+ * damped spring to (2/omega)(sqrt(1 + zeta^2) - zeta) (central difference with damping).
+ * The estimate takes, for every dynamic body, the stiffest material pair it can meet,
+ * translational (k_N, mass m) and rotational (k r^2 about the centroid, inertia I, with k_S for
+ * discs whose contacts act at the rim and max(k_N, k_S) for polygons whose corners carry
+ * normal forces off the centroid). The step is dt_safety times the smallest of these,
+ * capped by MAX_DT_CR. */
+#include "dem/world_internal.h"
+#include <math.h>
+#include <stdlib.h>
+
+static double damped_limit(double m, double k, double zeta) {
+    if (!(k > 0) || !(m > 0)) return INFINITY;
+    return 2 * sqrt(m / k) * (sqrt(1 + zeta * zeta) - zeta);
+}
+
+void pl__compute_dt(pl_world *w) {
+    if (w->pair_params_dirty) pl__update_pair_params(w);
+    const int nm = w->material_count;
+    pl_dt_report r = {0};
+    r.dt_critical = INFINITY;
+    r.limiting_body = -1;
+    r.limit_kind = "none";
+    if (nm > 0) {
+        uint8_t *used = calloc((size_t)nm, 1);
+        double *kn = calloc((size_t)nm, sizeof *kn), *ks = calloc((size_t)nm, sizeof *ks);
+        double *cn = calloc((size_t)nm, sizeof *cn), *zeta = calloc((size_t)nm, sizeof *zeta);
+        if (used && kn && ks && cn && zeta) {
+            for (int i = 0; i < w->n; i++) used[w->material[i]] = 1;
+            for (int a = 0; a < nm; a++)
+                for (int b = 0; b < nm; b++) {
+                    if (!used[b]) continue;
+                    const pl_pair_params *p = pl__pair_params(w, a, b);
+                    kn[a] = fmax(kn[a], p->kn);
+                    ks[a] = fmax(ks[a], p->ks);
+                    cn[a] = fmax(cn[a], p->cn);
+                    zeta[a] = fmax(zeta[a], p->zeta);
+                }
+            for (int i = 0; i < w->n; i++) {
+                if (w->motion[i] != PL_MOTION_DYNAMIC || !(w->mass[i] > 0)) continue;
+                const int m = w->material[i];
+                const double mass = w->mass[i];
+                const double z = zeta[m] > 0 ? zeta[m] : (kn[m] > 0 ? cn[m] / (2 * sqrt(mass * kn[m])) : 0);
+                const double dtt = damped_limit(mass, kn[m], z);
+                if (dtt < r.dt_critical) {
+                    r.dt_critical = dtt;
+                    r.limiting_body = i;
+                    r.limit_kind = "translation";
+                }
+                const double rr = w->radius[i];
+                const double krot = (w->shape[i] == PL_SHAPE_DISC ? ks[m] : fmax(kn[m], ks[m])) * rr * rr;
+                const double dtr = damped_limit(w->inertia[i], krot, 0);
+                if (dtr < r.dt_critical) {
+                    r.dt_critical = dtr;
+                    r.limiting_body = i;
+                    r.limit_kind = "rotation";
+                }
+            }
+        }
+        free(used); free(kn); free(ks); free(cn); free(zeta);
+    }
+    if (w->def.dt > 0) {
+        r.dt = w->def.dt;
+        r.fixed = 1;
+    } else {
+        r.dt = isfinite(r.dt_critical) ? w->def.dt_safety * r.dt_critical : INFINITY;
+        if (w->def.max_dt > 0 && r.dt > w->def.max_dt) {
+            r.dt = w->def.max_dt;
+            r.capped = 1;
+        }
+        if (!isfinite(r.dt)) r.dt = 0;
+    }
+    w->dt_report = r;
+    w->dt = r.dt;
+}

@@ -1,0 +1,143 @@
+/* The world facade: creation, errors, the step loop and simple queries. */
+#include "dem/world_internal.h"
+#include "fluid/fluid_hook.h"
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+pl_world_def pl_default_world_def(void) {
+    pl_world_def d;
+    memset(&d, 0, sizeof d);
+    d.gravity = (pl_vec2){0, -9.81};
+    d.dt = 0;
+    d.dt_safety = 0.1;
+    d.max_dt = 0;
+    d.max_overlap_ratio = 0.5;
+    d.energy_surge_ratio = 10;
+    d.guard_interval = 1;
+    return d;
+}
+
+pl_status pl__error(pl_world *w, pl_status s, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(w->error, sizeof w->error, fmt, ap);
+    va_end(ap);
+    return s;
+}
+
+const char *pl_world_last_error(const pl_world *w) { return w ? w->error : "no world"; }
+
+pl_world *pl_world_create(const pl_world_def *def) {
+    pl_world *w = calloc(1, sizeof *w);
+    if (!w) return NULL;
+    w->def = def ? *def : pl_default_world_def();
+    if (w->def.dt_safety <= 0) w->def.dt_safety = 0.1;
+    if (w->def.guard_interval < 1) w->def.guard_interval = 1;
+    if (w->def.max_overlap_ratio <= 0) w->def.max_overlap_ratio = 0.5;
+    if (w->def.energy_surge_ratio <= 1) w->def.energy_surge_ratio = 10;
+    w->need_rebuild = 1;
+    pl__flags_init(w);
+    if (!w->flag_values) {
+        free(w);
+        return NULL;
+    }
+    return w;
+}
+
+void pl_world_destroy(pl_world **wp) {
+    if (!wp || !*wp) return;
+    pl_world *w = *wp;
+    if (w->fluid) pl__fluid_free(w->fluid);
+    free(w->materials);
+    free(w->pair_params);
+    free(w->pair_overrides);
+    free(w->pos); free(w->vel); free(w->force);
+    free(w->angle); free(w->omega); free(w->torque);
+    free(w->mass); free(w->inv_mass); free(w->inertia); free(w->inv_inertia);
+    free(w->radius); free(w->area); free(w->shape); free(w->motion);
+    free(w->material); free(w->user_id); free(w->law); free(w->load); free(w->load_moment);
+    free(w->x0); free(w->vert_offset); free(w->vert_count);
+    free(w->verts_local); free(w->verts_world);
+    free(w->pairs); free(w->pairs_scratch);
+    free(w->pos_at_build); free(w->angle_at_build);
+    free(w->cell_start); free(w->cell_items); free(w->body_cell); free(w->cursor);
+    free(w->is_large); free(w->large_list); free(w->cand);
+    free(w->flag_values);
+    free(w);
+    *wp = NULL;
+}
+
+double pl_world_time(const pl_world *w) { return w->time; }
+int64_t pl_world_step_count(const pl_world *w) { return w->step; }
+
+double pl_world_dt(pl_world *w) {
+    if (w->dt <= 0) pl__compute_dt(w);
+    return w->dt;
+}
+
+pl_dt_report pl_world_dt_report(pl_world *w) {
+    if (w->dt <= 0) pl__compute_dt(w);
+    return w->dt_report;
+}
+
+/* Energy reference: taken at the first step and again whenever the scene changes the world
+   between steps (new bodies, new velocities), so the balance measures the integration only. */
+static void init_energy_reference(pl_world *w) {
+    w->e_supply0 = pl__kinetic_energy(w) + pl__elastic_energy(w);
+    w->pe0 = pl__gravitational_energy(w);
+    w->ext0 = w->e_external;
+    w->e_initial = w->e_supply0 + w->pe0 + w->e_damped + w->e_friction - w->e_external;
+    w->energy_initialised = 1;
+}
+
+/* Work done on the dynamic bodies by kinematic bodies and constant loads over one step. */
+static void tally_external_work(pl_world *w, double dt) {
+    double work = 0;
+    for (int i = 0; i < w->n; i++) {
+        if (w->motion[i] == PL_MOTION_DYNAMIC) {
+            /* constant loads act on dynamic bodies; their power uses the mid-step velocity,
+               added in the integrator (see integrate.c) */
+            continue;
+        }
+        /* force[i] is the reaction the dynamic bodies exert on kinematic body i, so the work
+           the kinematic body does on them is the negative of its power */
+        work -= (w->force[i].x * w->vel[i].x + w->force[i].y * w->vel[i].y + w->torque[i] * w->omega[i]) * dt;
+    }
+    w->e_external += work;
+}
+
+pl_status pl_world_step(pl_world *w, int nsteps) {
+    if (nsteps < 0) return pl__error(w, PL_ERR_ARG, "step: the step count must be >= 0 (got %d)", nsteps);
+    if (w->dt <= 0) pl__compute_dt(w);
+    if (w->dt <= 0 || !isfinite(w->dt))
+        return pl__error(w, PL_ERR_STATE, "step: no valid time step (add a dynamic body, or set dt > 0)");
+    if (w->pair_params_dirty) pl__update_pair_params(w);
+    if (!w->energy_initialised) init_energy_reference(w);
+    const double dt = w->dt;
+    for (int s = 0; s < nsteps; s++) {
+        pl_status st = pl__neighbor_update(w);
+        if (st != PL_OK) return st;
+        for (int i = 0; i < w->n; i++) {
+            w->force[i] = w->load[i];
+            w->torque[i] = w->load_moment[i];
+        }
+        pl__compute_contact_forces(w, dt);
+        if (w->fluid) {
+            st = pl__fluid_step(w, dt);
+            if (st != PL_OK) return st;
+        }
+        pl__apply_motion_laws(w, w->time, dt);
+        tally_external_work(w, dt);
+        pl__integrate(w, dt);
+        w->time += dt;
+        w->step++;
+        if ((w->step % w->def.guard_interval) == 0 || s == nsteps - 1) {
+            st = pl__check_guards(w);
+            if (st != PL_OK) return st;
+        }
+    }
+    return PL_OK;
+}

@@ -1,0 +1,191 @@
+/* Private layout of the world. Engine modules (dem, fluid) include this; nothing outside
+ * the engine does. Bodies are stored as structure-of-arrays for the hot loops. */
+#ifndef PL_WORLD_INTERNAL_H
+#define PL_WORLD_INTERNAL_H
+
+#include "porelab/world.h"
+#include <stdint.h>
+
+#define PL_ERR_LEN 2048
+
+/* Material-pair parameters after combination rules and overrides. */
+typedef struct pl_pair_params {
+    double kn, ks;      /* N/m */
+    double friction;    /* mu */
+    double cohesion;    /* N */
+    double cn, cs;      /* N s/m, used when restitution < 0 */
+    double restitution; /* < 0: use cn/cs; else damping ratio from e with the pair's mass */
+    double zeta;        /* damping ratio from restitution (precomputed), or -1 */
+} pl_pair_params;
+
+typedef struct pl_material {
+    pl_material_def def;
+    char name[64];
+} pl_material;
+
+/* Pair kinds for the narrow phase. Body a always has the lower shape code or index. */
+enum {
+    PL_PAIR_DISC_DISC = 0,
+    PL_PAIR_DISC_SEGMENT = 1,
+    PL_PAIR_POLY_DISC = 2,    /* a polygon, b disc (or a disc, b polygon: see flags) */
+    PL_PAIR_POLY_POLY = 3,
+    PL_PAIR_POLY_SEGMENT = 4,
+    PL_PAIR_NONE = 255        /* never interacts (e.g. two kinematic bodies) */
+};
+
+/* One neighbour pair with its persistent contact history. */
+typedef struct pl_pair {
+    int32_t a, b;         /* body indices, a < b */
+    uint8_t kind;         /* PL_PAIR_* */
+    uint8_t touching;     /* 1 when in contact after the last force evaluation */
+    uint8_t swapped;      /* 1 when the shape roles are swapped relative to a/b (poly-disc) */
+    uint8_t pad;
+    int32_t params;       /* index into world->pair_params (material pair) */
+    double fs;            /* shear (tangential) spring force, N (history) */
+    double fn;            /* normal force of the last evaluation, N (elastic + damping) */
+    double ft;            /* tangential force of the last evaluation, N (on b along t) */
+    double overlap;       /* overlap depth, m (polygons: area / contact length) */
+    double area_prev;     /* polygons: overlap area at the previous step, m^2 (history) */
+    double elastic;       /* elastic energy stored in the contact springs, J */
+    pl_vec2 point;        /* contact point */
+    pl_vec2 normal;       /* unit normal a -> b */
+} pl_pair;
+
+/* Boundary motion laws of prescribed bodies. */
+typedef enum pl_motion_law {
+    PL_LAW_CONSTANT = 0,  /* constant velocity (MIMES set_velocity) */
+    PL_LAW_SINUSOID = 1,  /* x(t) = x0 + A sin(2 pi f (t - t0)) between t0 and t1 */
+    PL_LAW_SERVO = 2      /* servo wall holding a force (seed 003 eqs. 5.11-5.12) */
+} pl_motion_law;
+
+typedef struct pl_motion {
+    int law;
+    pl_vec2 velocity; double omega;      /* constant law */
+    pl_vec2 amplitude; double frequency; /* sinusoid: displacement amplitude (m), Hz */
+    double t_start, t_stop;
+    pl_vec2 servo_dir; double servo_target; double servo_gain; double servo_vmax;
+} pl_motion;
+
+struct pl_fluid; /* fluid module (engine/src/fluid) */
+
+struct pl_world {
+    pl_world_def def;
+    char error[PL_ERR_LEN];
+
+    /* materials */
+    pl_material *materials;
+    int material_count, material_cap;
+    pl_pair_params *pair_params;   /* material_count^2, symmetric */
+    pl_pair_def *pair_overrides;   /* material_count^2 */
+    int pair_params_dirty;
+
+    /* bodies (structure of arrays) */
+    int n, cap;
+    pl_vec2 *pos, *vel, *force;
+    double *angle, *omega, *torque;
+    double *mass, *inv_mass, *inertia, *inv_inertia;
+    double *radius;               /* disc radius or bounding radius about the centroid */
+    double *area;
+    uint8_t *shape, *motion;
+    int32_t *material, *user_id;
+    pl_motion *law;               /* per body (prescribed bodies) */
+    pl_vec2 *load; double *load_moment; /* constant external loads */
+    pl_vec2 *x0;                  /* reference position for sinusoid laws */
+    /* polygon and segment outlines: local vertices relative to the centroid at angle 0 */
+    int32_t *vert_offset, *vert_count;
+    pl_vec2 *verts_local;
+    int verts_n, verts_cap;
+    pl_vec2 *verts_world;         /* updated each step for polygons/segments (same indexing) */
+
+    /* neighbour list */
+    pl_pair *pairs, *pairs_scratch;
+    int pair_n, pair_cap, pair_scratch_cap;
+    pl_vec2 *pos_at_build;        /* positions when the list was built */
+    double *angle_at_build;
+    double skin;
+    int need_rebuild;
+    int64_t rebuilds;
+    /* broadphase: bodies larger than a few typical grains (walls, blocks) are kept out of
+       the grid and tested against every body */
+    uint8_t *is_large;
+    int32_t *large_list;
+    int large_n, class_cap;
+    double cell_size;
+    int32_t *cand;               /* candidate partners of one body during a rebuild */
+    int cand_cap;
+    /* broadphase grid scratch */
+    int32_t *cell_start, *cell_items, *body_cell, *cursor;
+    int cell_cap, cell_items_cap, body_cell_cap, cursor_cap;
+    int classify_dirty;           /* bodies added or changed motion: re-split grid/large */
+
+    /* time */
+    double time;
+    int64_t step;
+    double dt;                    /* 0 until computed */
+    pl_dt_report dt_report;
+
+    /* energy tallies (J) */
+    double e_damped, e_friction, e_external, e_initial;
+    int energy_initialised;
+    double ke_prev;
+
+    /* guard bookkeeping from the last force evaluation */
+    double worst_overlap_ratio;   /* overlap / smaller radius */
+    int worst_a, worst_b;
+    double e_supply0;             /* KE + elastic at the reference time (energy-surge guard) */
+    double ext0;                  /* e_external at the reference time */
+    double pe0;                   /* gravitational energy at t = 0 */
+
+    /* flags (MIMES names), values indexed like the flag table */
+    double *flag_values;
+
+    /* fluid (NULL when no fluid model is attached) */
+    struct pl_fluid *fluid;
+};
+
+/* Error helper: formats into w->error and returns status. */
+pl_status pl__error(pl_world *w, pl_status s, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* Pair parameters lookup. */
+static inline const pl_pair_params *pl__pair_params(const pl_world *w, int ma, int mb) {
+    return &w->pair_params[ma * w->material_count + mb];
+}
+void pl__update_pair_params(pl_world *w);
+
+/* Body helpers */
+void pl__update_world_vertices(pl_world *w, int body);
+int pl__ensure_body_capacity(pl_world *w, int need);
+
+/* Neighbour list */
+pl_status pl__neighbor_update(pl_world *w);
+void pl__neighbor_mark_dirty(pl_world *w);
+
+/* Forces */
+void pl__compute_contact_forces(pl_world *w, double dt);
+
+/* Integration */
+void pl__integrate(pl_world *w, double dt);
+void pl__apply_motion_laws(pl_world *w, double t, double dt);
+
+/* Time step */
+void pl__compute_dt(pl_world *w);
+
+/* Guards: returns PL_OK or PL_ERR_UNSTABLE with message */
+pl_status pl__check_guards(pl_world *w);
+
+/* Energy */
+double pl__kinetic_energy(const pl_world *w);
+double pl__elastic_energy(const pl_world *w);
+double pl__gravitational_energy(const pl_world *w);
+
+/* Flags */
+void pl__flags_init(pl_world *w);
+/* Marks a recognised flag as built (called by modules such as the fluid when they attach). */
+void pl__flags_mark_built(const char *name);
+
+/* Fluid hooks (implemented in engine/src/fluid; see fluid_hook.h). */
+#endif

@@ -1,0 +1,220 @@
+/* Private layout of the Darcy pore-fluid model (seed 000, ch. 3). The fluid model does not
+ * depend on the world layout except in fluid_world.c / fluid_hook.c: mesh, assembly, solver,
+ * porosity and force code work on the plain structs below so that unit tests can drive them
+ * without a world. */
+#ifndef PL_FLUID_INTERNAL_H
+#define PL_FLUID_INTERNAL_H
+
+#include "porelab/core.h"
+#include "porelab/fluid.h"
+#include <cholmod.h>
+#include <stdint.h>
+
+#define PL_FL_MSG 512
+
+/* -------------------------------------------------------------------- input */
+
+typedef struct pl_fl_quad {
+    pl_vec2 c[4];       /* counter-clockwise corners */
+    int ndivx, ndivy;
+    int id;
+    double anisotropy;  /* D_y / D_x */
+} pl_fl_quad;
+
+enum { PL_FL_LINE_HEAD = 0, PL_FL_LINE_FLUX = 1 };
+
+typedef struct pl_fl_line {
+    pl_vec2 a, b;
+    double value;       /* pressure head (m) or inflow flux (m/s) */
+    int kind;           /* PL_FL_LINE_* */
+} pl_fl_line;
+
+/* --------------------------------------------------------------------- mesh */
+
+typedef struct pl_fl_mesh {
+    int nn, ne;
+    pl_vec2 *xy;        /* nn node coordinates */
+    int32_t *tri;       /* 3 * ne node indices, counter-clockwise */
+    int32_t *tri_quad;  /* quad index of each triangle */
+    double *area;       /* ne */
+    double *bc;         /* 6 * ne: b_i b_j b_k c_i c_j c_k of eq. 3.12 */
+    double scale;       /* bounding-box diagonal (tolerances) */
+    pl_vec2 lo, hi;     /* bounding box */
+    /* point-location grid (seed 000 §3.13.1) */
+    double cell;
+    int gx, gy;
+    int32_t *cell_start, *cell_items;
+    /* boundary edges (used once) */
+    int nbe;
+    int32_t *bedge;     /* 2 * nbe, oriented as in their triangle (counter-clockwise) */
+    /* statistics of the meshing */
+    int merged_nodes, split_triangles;
+} pl_fl_mesh;
+
+/* Meshes the quads into mesh (allocates). On error returns a status and writes msg. */
+pl_status pl_fl_mesh_build(pl_fl_mesh *m, const pl_fl_quad *quads, int nq, char *msg, int msglen);
+void pl_fl_mesh_free(pl_fl_mesh *m);
+/* Builds the point-location grid (called by pl_fl_mesh_build). */
+pl_status pl_fl_mesh_build_grid(pl_fl_mesh *m);
+/* Triangle containing p (barycentric tolerance relative), or -1. */
+int pl_fl_locate(const pl_fl_mesh *m, pl_vec2 p);
+/* Barycentric coordinates of p in triangle e. */
+void pl_fl_barycentric(const pl_fl_mesh *m, int e, pl_vec2 p, double l[3]);
+/* Grid cell range covering a box (clamped); returns 0 if the box misses the grid. */
+int pl_fl_grid_range(const pl_fl_mesh *m, pl_vec2 lo, pl_vec2 hi, int *i0, int *j0, int *i1, int *j1);
+
+/* ------------------------------------------------------------------- system */
+
+typedef struct pl_fl_system {
+    /* full symmetric matrix pattern over all nodes (compressed columns, both triangles) */
+    int32_t *colp, *rowi;
+    int nnz;
+    double *kval;       /* conductance (admittance, eq. 3.11) */
+    double *mval;       /* mass: consistent or lumped (diagonal only) */
+    double *mlump;      /* nn lumped mass (A/3 per triangle), for the explicit method */
+    int32_t *emap;      /* 9 * ne positions of element entries in the full pattern */
+    int32_t *diag;      /* nn positions of diagonal entries */
+    /* boundary conditions */
+    uint8_t *is_dir;    /* nn */
+    double *dir_head;   /* nn prescribed total head (valid where is_dir) */
+    int32_t *dir_line;  /* nn: line index that prescribed the node, or -1 */
+    double *fload;      /* nn nodal inflow from flux lines (m^2/s) */
+    int32_t *free_index;/* nn: index among free nodes, or -1 */
+    int32_t *free_node; /* nf */
+    int nf;
+    /* reduced SPD matrix (upper triangle) for CHOLMOD and map full -> reduced */
+    cholmod_common cc;
+    int cc_started;
+    cholmod_sparse *A;
+    int32_t *amap;      /* nnz: index into A->x or -1 */
+    cholmod_factor *L;
+    cholmod_dense *rhs, *sol, *wy, *we;
+    int analysed, factorised;
+    double fact_c, fact_theta; /* coefficients of the factorised matrix (c M + theta K) */
+    double *work;       /* nn */
+} pl_fl_system;
+
+/* ---------------------------------------------------------------- the model */
+
+/* Parameters resolved from the world flags before each update. */
+typedef struct pl_fl_params {
+    int on;
+    int first_step_static;
+    int perm_mode;          /* 0 uniform, 1 from porosity, 2 per-element user values */
+    double perm_low, perm_high; /* m/s (or m^2 when perm_units = 1) */
+    int solve_every;
+    double density;         /* kg/m^3 */
+    double storage;         /* specific storage S, 1/m */
+    double viscosity;       /* Pa s */
+    int perm_units;         /* 0 hydraulic conductivity m/s, 1 intrinsic permeability m^2 */
+    int method;             /* 0 backward Euler, 1 Crank-Nicolson, 2 explicit, 3 static */
+    int mass_consistent;    /* 0 lumped, 1 consistent */
+    int porosity_method;    /* 0 exact clipping, 1 pixellation */
+    int pixels;             /* pixels along the longer side of an element's box */
+    int porosity_map;       /* 0 areal (2D), 1 2D->3D mapping of DESIGN §3 */
+    int kc_mode;            /* 0 interpolate between low and high, 1 clamp C1 e^3/(1+e) */
+    double kc_c1;
+    int drag;               /* 1 add interphase drag */
+    double explicit_safety; /* fraction of the stability limit used by the explicit method */
+    pl_vec2 gravity;        /* m/s^2 */
+    double g;               /* |gravity| or standard gravity when zero */
+    pl_vec2 up;             /* unit vector opposite to gravity (or +y) */
+    int geometry_flag, pressures_flag;
+} pl_fl_params;
+
+/* Candidate (body, element) pair with the solid area of the body inside the element. */
+typedef struct pl_fl_cover {
+    int32_t body, elem;
+    double area;
+} pl_fl_cover;
+
+/* Geometry of the bodies as the fluid sees them (copied or pointed from the world). */
+typedef struct pl_fl_bodies {
+    int n;
+    const uint8_t *shape;       /* pl_shape_type */
+    const pl_vec2 *pos;         /* centroid */
+    const double *radius;       /* disc radius / bounding radius */
+    const int32_t *vert_offset, *vert_count;
+    const pl_vec2 *verts;       /* world vertices */
+} pl_fl_bodies;
+
+struct pl_fluid {
+    /* input */
+    pl_fl_quad *quads; int nq, qcap;
+    pl_fl_line *lines; int nl, lcap;
+    int mesh_dirty;             /* quads changed: remesh */
+    int bc_dirty;               /* lines changed: re-apply, re-analyse */
+    /* mesh and system */
+    pl_fl_mesh mesh;
+    pl_fl_system sys;
+    int built;
+    /* state */
+    double *head;               /* nn total head h = p/(rho g) + z, m */
+    double *head_prev;
+    double *perm;               /* ne isotropic conductivity (before anisotropy), m/s */
+    double *perm_user;          /* ne user values (perm_mode 2) or NULL */
+    double *perm_assembled;     /* ne conductivity in the assembled matrix */
+    double *solid;              /* ne solid area of each element, m^2 */
+    double *voidr;              /* ne void ratio after clamping (2D areal) */
+    double *porosity;           /* ne porosity used for permeability (after mapping) */
+    double *grad;               /* 2 * ne total-head gradient */
+    pl_fl_cover *cover; int ncover, cover_cap;
+    int32_t *body_cover_start;  /* n+1 per body ranges into cover (sorted by body) */
+    int body_cap;
+    int k_dirty;                /* permeabilities changed since the last assembly */
+    int have_solution;          /* head holds a solution for the current system */
+    int static_valid;           /* head is the static solution of the current matrix and BCs */
+    int initialised;            /* first fluid step done */
+    int64_t steps_since;        /* grain steps since the last solve */
+    double time_since;          /* time since the last solve, s */
+    double time;                /* fluid time, s */
+    pl_fl_params par;
+    pl_fl_params assembled_par; /* parameters used for the assembled matrix */
+    /* outputs */
+    char geometry_file[256], pressures_file[256];
+    int geometry_written;
+    int pressures_started;
+    pl_fluid_stats stats;
+    char msg[PL_FL_MSG];
+};
+
+/* assembly and solution (fluid_system.c, fluid_solve.c) */
+pl_status pl_fl_system_build(struct pl_fluid *f);         /* pattern, BCs, analysis */
+void pl_fl_system_free(pl_fl_system *s);
+void pl_fl_assemble(struct pl_fluid *f);                  /* values from f->perm */
+pl_status pl_fl_solve_static(struct pl_fluid *f);
+pl_status pl_fl_advance(struct pl_fluid *f, double dt);   /* transient step of length dt */
+void pl_fl_apply_dirichlet(struct pl_fluid *f, double *h);
+double pl_fl_explicit_dt_limit(const struct pl_fluid *f);
+/* Net inflow (m^2/s per unit thickness) through the nodes a head line prescribes. */
+double pl_fl_line_inflow(const struct pl_fluid *f, int line);
+
+/* porosity and permeability (fluid_porosity.c) */
+pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b);
+void pl_fl_update_permeability(struct pl_fluid *f);
+double pl_fl_tri_disc_area(const pl_vec2 t[3], pl_vec2 c, double r);
+double pl_fl_tri_poly_area(const pl_vec2 t[3], const pl_vec2 *v, int n);
+double pl_fl_kc_map(const pl_fl_params *p, double e);
+double pl_fl_porosity_3d(double n2d);
+
+/* fields (fluid_field.c) */
+double pl_fl_z(const struct pl_fluid *f, pl_vec2 p);     /* elevation along -gravity */
+double pl_fl_node_pressure(const struct pl_fluid *f, int node);
+void pl_fl_update_gradients(struct pl_fluid *f);
+/* Pressure (Pa) at p; returns the element or -1 outside (pressure 0 then). */
+int pl_fl_pressure_at(const struct pl_fluid *f, pl_vec2 p, double *pressure, double *head);
+
+/* forces (fluid_forces.c) */
+void pl_fl_polygon_force(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c,
+                         pl_vec2 *force, double *moment);
+void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *force);
+/* Pressure force and moment plus drag on body i; adds to *force, *moment. */
+void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i,
+                      pl_vec2 *force, double *moment);
+
+/* default parameters (used when no world flag table is available) */
+pl_fl_params pl_fl_default_params(void);
+
+/* timer */
+double pl_fl_now(void);
+#endif
