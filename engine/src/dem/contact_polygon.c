@@ -1,8 +1,210 @@
-/* Placeholder until the area-based polygon contact lands: polygons do not interact yet. */
+/* Area-based contact law for polygons with polygons, discs and wall segments (seed 004 §3;
+ * equations, choices and validation in docs/contact-laws-polygons.md).
+ *
+ *   overlap region  exact: convex clipping, disc-polygon sectors, or the polygon beyond a wall
+ *   normal n        perpendicular to the chord through the two points where the outlines
+ *                   cross (seed 004 Fig. 2); computed as the rotated sum of the first body's
+ *                   outline pieces inside the other, which equals p2 - p1 for two crossings
+ *                   and is the area gradient in general (shared edges, several crossings)
+ *   elastic         F_el = Y A / l_char, Y = k_N of the pair (N/m in 2D),
+ *                   l_char = 4 |l1| |l2| / (|l1| + |l2|) (seed 004 eq. 1); wall: l_char = |l1|
+ *   damping         F_da = c (dA/dt) / w, w the chord length, c = 2 zeta sqrt(m_red k_eff)
+ *                   with k_eff = Y w / l_char (or c = c_N given), |F_da| <= F_el (seed 004 eq. 2)
+ *   friction        incremental tangential spring k_t = k_S k_eff / k_N with the Coulomb cap
+ *                   |F_t| <= mu F_el + c (return mapping; the regularized Coulomb law of
+ *                   seed 002 §2.3.3), tangential dashpot while sticking as in the disc law
+ *   point of action the overlap centroid S; moments with the lever arms S - C (Fig. 2)
+ * Conventions as contact_disc.c: n from a to b, t = (-n.y, n.x), force on b +F, on a -F. */
 #include "dem/contact_polygon.h"
+#include "geom/clip.h"
+#include <math.h>
+
+static inline double cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y * f.x; }
+static inline double dot2(pl_vec2 a, pl_vec2 b) { return a.x * b.x + a.y * b.y; }
+
+static inline void untouch(pl_pair *p) {
+    p->touching = 0;
+    p->fs = 0;
+    p->fn = 0;
+    p->ft = 0;
+    p->overlap = 0;
+    p->area_prev = 0;
+    p->elastic = 0;
+}
+
+/* Velocity of the material point of body i at x. */
+static inline pl_vec2 point_velocity(const pl_world *w, int i, pl_vec2 x) {
+    const pl_vec2 r = {x.x - w->pos[i].x, x.y - w->pos[i].y};
+    return (pl_vec2){w->vel[i].x - w->omega[i] * r.y, w->vel[i].y + w->omega[i] * r.x};
+}
+
+/* Geometry of one contact, body a and b as in the pair (n from a to b). */
+typedef struct geo {
+    double area;   /* m^2 */
+    pl_vec2 s;     /* overlap centroid */
+    pl_vec2 n;     /* unit normal a -> b */
+    double chord;  /* contact width w, m */
+    int wall;      /* 1 when one of the bodies is a wall segment */
+} geo;
+
+/* Fills g from the overlap (first outline = body `first`); returns 0 when not touching. */
+static int finish_geometry(const pl_world *w, const pl_overlap *o, int first, int a, int b,
+                           geo *g) {
+    g->area = o->area;
+    g->s = o->centroid;
+    const double cl = hypot(o->chord_vec.x, o->chord_vec.y);
+    const double scale = w->radius[a] + w->radius[b];
+    if (cl > 1e-12 * scale) {
+        g->n = (pl_vec2){o->chord_vec.y / cl, -o->chord_vec.x / cl};
+        if (first != a) g->n = (pl_vec2){-g->n.x, -g->n.y};
+        g->chord = cl;
+    } else {
+        /* one outline inside the other, or a symmetric crossing with no preferred
+         * direction: push along the line of the centroids */
+        const pl_vec2 d = {w->pos[b].x - w->pos[a].x, w->pos[b].y - w->pos[a].y};
+        const double l = hypot(d.x, d.y);
+        g->n = l > 0 ? (pl_vec2){d.x / l, d.y / l} : (pl_vec2){0, 1};
+        g->chord = sqrt(o->area);
+    }
+    return 1;
+}
+
+/* Computes the overlap geometry of pair p; returns 0 when the bodies do not overlap. */
+static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
+    const int a = p->a, b = p->b;
+    const int sa = w->shape[a], sb = w->shape[b];
+    const pl_vec2 ca = w->pos[a], cb = w->pos[b];
+    pl_overlap o;
+    g->wall = 0;
+    if (sa == PL_SHAPE_POLYGON && sb == PL_SHAPE_POLYGON) {
+        const double dx = cb.x - ca.x, dy = cb.y - ca.y, rs = w->radius[a] + w->radius[b];
+        if (dx * dx + dy * dy >= rs * rs) return 0;
+        const pl_vec2 *va = &w->verts_world[w->vert_offset[a]];
+        const pl_vec2 *vb = &w->verts_world[w->vert_offset[b]];
+        if (!(pl_clip_convex(va, w->vert_count[a], vb, w->vert_count[b], &o) > 0)) return 0;
+        return finish_geometry(w, &o, a, a, b, g);
+    }
+    if (sa == PL_SHAPE_SEGMENT || sb == PL_SHAPE_SEGMENT) {
+        const int s = sa == PL_SHAPE_SEGMENT ? a : b, q = s == a ? b : a;
+        if (w->shape[q] != PL_SHAPE_POLYGON) return 0;
+        const pl_vec2 *vs = &w->verts_world[w->vert_offset[s]];
+        const pl_vec2 *vq = &w->verts_world[w->vert_offset[q]];
+        pl_vec2 nw;
+        if (!(pl_clip_segment(vq, w->vert_count[q], vs[0], vs[1], w->pos[q], &o, &nw) > 0))
+            return 0;
+        g->wall = 1;
+        g->area = o.area;
+        g->s = o.centroid;
+        /* the wall normal points to the polygon; n runs from a to b */
+        g->n = q == a ? (pl_vec2){-nw.x, -nw.y} : nw;
+        g->chord = o.chord > 0 ? o.chord : sqrt(o.area);
+        return 1;
+    }
+    /* polygon and disc */
+    const int d = sa == PL_SHAPE_DISC ? a : b, q = d == a ? b : a;
+    const double dx = w->pos[d].x - w->pos[q].x, dy = w->pos[d].y - w->pos[q].y;
+    const double rs = w->radius[d] + w->radius[q];
+    if (dx * dx + dy * dy >= rs * rs) return 0;
+    const pl_vec2 *vq = &w->verts_world[w->vert_offset[q]];
+    if (!(pl_clip_disc(w->pos[d], w->radius[d], vq, w->vert_count[q], &o) > 0)) return 0;
+    return finish_geometry(w, &o, q, a, b, g);
+}
+
+/* l_char of seed 004 eq. 1; for a wall (rigid, no centre) the spring spans only the
+ * polygon's arm, l_char = |l1|. Floored at 5% of the smaller body radius so that a centroid
+ * driven into the overlap cannot make the force infinite (the overlap guard fires first). */
+static double char_length(const pl_world *w, int a, int b, pl_vec2 s, int wall) {
+    const int sa = w->shape[a];
+    const double l1 = hypot(s.x - w->pos[a].x, s.y - w->pos[a].y);
+    const double l2 = hypot(s.x - w->pos[b].x, s.y - w->pos[b].y);
+    double lc, rmin;
+    if (wall) {
+        const int q = sa == PL_SHAPE_SEGMENT ? b : a;
+        lc = q == a ? l1 : l2;
+        rmin = w->radius[q];
+    } else {
+        lc = l1 + l2 > 0 ? 4 * l1 * l2 / (l1 + l2) : 0;
+        rmin = fmin(w->radius[a], w->radius[b]);
+    }
+    return fmax(lc, 0.05 * rmin);
+}
 
 double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt) {
-    (void)w; (void)pp; (void)dt;
-    p->touching = 0; p->fs = 0; p->fn = 0; p->ft = 0; p->area_prev = 0;
-    return 0;
+    geo g;
+    if (!contact_geometry(w, p, &g)) {
+        untouch(p);
+        return 0;
+    }
+    const int a = p->a, b = p->b;
+    const pl_vec2 n = g.n, t = {-n.y, n.x};
+    const double Y = pp->kn;
+    const double lchar = char_length(w, a, b, g.s, g.wall);
+    const double width = fmax(g.chord, 1e-9 * (w->radius[a] + w->radius[b]));
+    const double fel = Y * g.area / lchar;           /* seed 004 eq. 1 */
+    const double keff = Y * width / lchar;           /* dF_el / d(depth), depth = A / w */
+    const double depth = g.area / width;
+
+    /* relative velocity of b's material point at S with respect to a's */
+    const pl_vec2 vA = point_velocity(w, a, g.s), vB = point_velocity(w, b, g.s);
+    const pl_vec2 vrel = {vB.x - vA.x, vB.y - vA.y};
+    const double vn = dot2(vrel, n), vt = dot2(vrel, t);
+
+    /* damping on the rate of the overlap area (seed 004 eq. 2) with the cutoff */
+    const double sinv = w->inv_mass[a] + w->inv_mass[b];
+    const double mred = sinv > 0 ? 1.0 / sinv : 0;
+    double cn = pp->cn;
+    if (pp->zeta >= 0) cn = 2 * pp->zeta * sqrt(mred * keff);
+    const double area_prev = p->touching ? p->area_prev : 0;
+    double fda = dt > 0 ? cn * (g.area - area_prev) / (dt * width) : 0;
+    if (fda > fel) fda = fel;
+    if (fda < -fel) fda = -fel;
+    const double fn = fel + fda;
+
+    /* friction: incremental tangential spring with the Coulomb cap */
+    const double kt = pp->kn > 0 ? pp->ks * keff / pp->kn : pp->ks;
+    const double ct = pp->kn > 0 ? cn * pp->ks / pp->kn : 0;
+    double fs = (p->touching ? p->fs : 0) - kt * vt * dt;
+    double fd = -ct * vt;
+    const double smax = pp->friction * fel + pp->cohesion;
+    if (fabs(fs) > smax) {
+        const double lim = smax > 0 ? smax : 0;
+        const double slip = kt > 0 ? (fabs(fs) - lim) / kt : fabs(vt) * dt;
+        w->e_friction += lim * slip;
+        fs = fs > 0 ? lim : -lim;
+        fd = 0;
+    }
+    const double ft = fs + fd;
+
+    p->fs = fs;
+    p->fn = fn;
+    p->ft = ft;
+    p->overlap = depth;
+    p->area_prev = g.area;
+    p->normal = n;
+    p->point = g.s;
+    p->touching = 1;
+    /* stored energy: exact for a contact of constant width (A = w depth); see the docs */
+    p->elastic = 0.5 * fel * depth + (kt > 0 ? 0.5 * fs * fs / kt : 0);
+    /* dissipation = work the dashpots take out of the bodies during this step */
+    w->e_damped += (-fda * vn - fd * vt) * dt;
+
+    const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
+    w->force[b].x += F.x;
+    w->force[b].y += F.y;
+    w->force[a].x -= F.x;
+    w->force[a].y -= F.y;
+    const pl_vec2 ra = {g.s.x - w->pos[a].x, g.s.y - w->pos[a].y};
+    const pl_vec2 rb = {g.s.x - w->pos[b].x, g.s.y - w->pos[b].y};
+    w->torque[b] += cross2(rb, F);
+    w->torque[a] -= cross2(ra, F);
+
+    const double rmin = g.wall ? w->radius[w->shape[a] == PL_SHAPE_SEGMENT ? b : a]
+                               : fmin(w->radius[a], w->radius[b]);
+    const double ratio = rmin > 0 ? depth / rmin : 0;
+    if (ratio > w->worst_overlap_ratio) {
+        w->worst_overlap_ratio = ratio;
+        w->worst_a = a;
+        w->worst_b = b;
+    }
+    return fmax(keff, kt);
 }

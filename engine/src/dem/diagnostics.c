@@ -3,21 +3,40 @@
 #include <math.h>
 #include <string.h>
 
+/* Energies are reported at the time of the last force evaluation, t_n = t - dt, where the
+   contact springs' elastic energy was measured. The central difference keeps velocities at
+   half steps; the synchronous velocity v_n = (v_{n-1/2} + v_{n+1/2}) / 2 is recovered from the
+   newest half-step velocity and the last acceleration, and positions are taken back one step,
+   x_n = x_{n+1} - v_{n+1/2} dt. With all terms at the same instant the energy balance of the
+   scheme is second order in dt. */
+static int synced(const pl_world *w) { return w->step > 0 && w->dt > 0; }
+
 double pl__kinetic_energy(const pl_world *w) {
     double e = 0;
+    const double h = synced(w) ? 0.5 * w->dt : 0;
+    const pl_vec2 g = w->def.gravity;
+    const double C = w->def.global_c, Cr = w->def.global_c_rot, al = w->def.rayleigh_alpha;
     for (int i = 0; i < w->n; i++) {
-        if (w->motion[i] != PL_MOTION_DYNAMIC) continue;
-        e += 0.5 * w->mass[i] * (w->vel[i].x * w->vel[i].x + w->vel[i].y * w->vel[i].y) +
-             0.5 * w->inertia[i] * w->omega[i] * w->omega[i];
+        if (w->motion[i] != PL_MOTION_DYNAMIC || !(w->mass[i] > 0)) continue;
+        const double m = w->mass[i], I = w->inertia[i];
+        const double q = 1 - h * (C + al * m) / m;
+        const pl_vec2 v = {(w->vel[i].x - h * (w->force[i].x / m + g.x)) / q,
+                           (w->vel[i].y - h * (w->force[i].y / m + g.y)) / q};
+        double om = w->omega[i];
+        if (I > 0) om = (om - h * w->torque[i] / I) / (1 - h * (Cr + al * I) / I);
+        e += 0.5 * m * (v.x * v.x + v.y * v.y) + 0.5 * I * om * om;
     }
     return e;
 }
 
 double pl__gravitational_energy(const pl_world *w) {
     double e = 0;
+    const double dt = synced(w) ? w->dt : 0;
     for (int i = 0; i < w->n; i++)
-        if (w->motion[i] == PL_MOTION_DYNAMIC)
-            e -= w->mass[i] * (w->def.gravity.x * w->pos[i].x + w->def.gravity.y * w->pos[i].y);
+        if (w->motion[i] == PL_MOTION_DYNAMIC) {
+            const double x = w->pos[i].x - dt * w->vel[i].x, y = w->pos[i].y - dt * w->vel[i].y;
+            e -= w->mass[i] * (w->def.gravity.x * x + w->def.gravity.y * y);
+        }
     return e;
 }
 

@@ -7,6 +7,7 @@
 
 #include "porelab/core.h"
 #include "porelab/fluid.h"
+#include "porelab/world.h"
 #include <cholmod.h>
 #include <stdint.h>
 
@@ -159,6 +160,7 @@ struct pl_fluid {
     double *porosity;           /* ne porosity used for permeability (after mapping) */
     double *grad;               /* 2 * ne total-head gradient */
     pl_fl_cover *cover; int ncover, cover_cap;
+    int32_t *stamp; int32_t stamp_gen; /* ne: last body generation that met the element */
     int32_t *body_cover_start;  /* n+1 per body ranges into cover (sorted by body) */
     int body_cap;
     int k_dirty;                /* permeabilities changed since the last assembly */

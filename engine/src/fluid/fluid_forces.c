@@ -1,0 +1,236 @@
+/* Fluid forces on grains (seed 000 §3.11-3.12). The pressure p = rho_f g (h - z) is linear in
+ * each element, so the outline integrals F = -∮ p n ds and M = ∮ (r - c) x dF are evaluated
+ * exactly: polygon edges are split where they cross element edges (and where p changes sign),
+ * then each piece is integrated in closed form (trapezoid for the force, eq. 3.34; the
+ * quadratic moment integrand exactly, which is eq. 3.35 written as an integral). Discs are
+ * integrated on their circle, arc by arc, in closed form. Dry region: the fluid pushes only
+ * where p > 0 inside the mesh; outside the mesh p = 0 (partial submersion, §3.11.4 and
+ * Fig. 3-11, including sign changes inside an element). Interphase drag of the porous skeleton
+ * (DESIGN §3): each grain receives e (its solid area in the element) (-grad p_excess) per
+ * element it covers, e the element's areal void ratio, so that the whole seepage force acts on
+ * the skeleton. */
+#include "fluid/fluid_internal.h"
+#include <math.h>
+#include <stdlib.h>
+
+#define BP_CAP 256
+
+static int cmp_d(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Parameters s (0..1 along a->b) where the segment enters/leaves triangle e (Cyrus-Beck). */
+static int clip_segment(const pl_fl_mesh *m, int e, pl_vec2 a, pl_vec2 d, double *s0, double *s1) {
+    const int32_t *v = &m->tri[3 * e];
+    double lo = 0, hi = 1;
+    for (int k = 0; k < 3; k++) {
+        pl_vec2 p = m->xy[v[k]], q = m->xy[v[(k + 1) % 3]];
+        /* inside: cross(q - p, x - p) >= 0 for a counter-clockwise triangle */
+        double ex = q.x - p.x, ey = q.y - p.y;
+        double num = ex * (a.y - p.y) - ey * (a.x - p.x); /* value at s = 0 */
+        double den = ex * d.y - ey * d.x;                 /* rate in s */
+        if (den == 0) {
+            if (num < 0) return 0;
+            continue;
+        }
+        double s = -num / den;
+        if (den > 0) { if (s > lo) lo = s; }
+        else { if (s < hi) hi = s; }
+        if (lo > hi) return 0;
+    }
+    *s0 = lo;
+    *s1 = hi;
+    return 1;
+}
+
+/* Pressure at a point using element e's linear field (extrapolates slightly outside e). */
+static double p_in(const struct pl_fluid *f, int e, pl_vec2 p) {
+    double l[3];
+    pl_fl_barycentric(&f->mesh, e, p, l);
+    const int32_t *v = &f->mesh.tri[3 * e];
+    double h = l[0] * f->head[v[0]] + l[1] * f->head[v[1]] + l[2] * f->head[v[2]];
+    return f->par.density * f->par.g * (h - pl_fl_z(f, p));
+}
+
+/* Exact force and moment of a linear pressure p0..p1 on a->b between u0 and u1 (fractions). */
+static void piece(pl_vec2 a, pl_vec2 d, pl_vec2 c, double u0, double u1, double p0, double p1, pl_vec2 *F, double *M) {
+    /* force direction per unit of u for a counter-clockwise outline: (-d.y, d.x) * p */
+    double du = u1 - u0;
+    double ip = du * 0.5 * (p0 + p1);
+    F->x += -d.y * ip;
+    F->y += d.x * ip;
+    pl_vec2 r0 = {a.x + u0 * d.x - c.x, a.y + u0 * d.y - c.y}, r1 = {a.x + u1 * d.x - c.x, a.y + u1 * d.y - c.y};
+    /* arm (r - c) x e with e = (-d.y, d.x): linear in u */
+    double g0 = r0.x * d.x + r0.y * d.y, g1 = r1.x * d.x + r1.y * d.y;
+    *M += du * (2 * g0 * p0 + g0 * p1 + g1 * p0 + 2 * g1 * p1) / 6.0;
+}
+
+static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c, double u0, double u1, pl_vec2 *F,
+                       double *M, int depth) {
+    const pl_fl_mesh *m = &f->mesh;
+    pl_vec2 d = {b.x - a.x, b.y - a.y};
+    pl_vec2 pa = {a.x + u0 * d.x, a.y + u0 * d.y}, pb = {a.x + u1 * d.x, a.y + u1 * d.y};
+    pl_vec2 lo = {fmin(pa.x, pb.x), fmin(pa.y, pb.y)}, hi = {fmax(pa.x, pb.x), fmax(pa.y, pb.y)};
+    int i0, j0, i1, j1;
+    if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
+    double bp[BP_CAP];
+    int nb = 0, overflow = 0;
+    bp[nb++] = u0;
+    bp[nb++] = u1;
+    for (int j = j0; j <= j1 && !overflow; j++)
+        for (int i = i0; i <= i1 && !overflow; i++) {
+            size_t cell = (size_t)j * m->gx + i;
+            for (int k = m->cell_start[cell]; k < m->cell_start[cell + 1]; k++) {
+                double s0, s1;
+                if (!clip_segment(m, m->cell_items[k], a, d, &s0, &s1)) continue;
+                if (s1 < u0 || s0 > u1) continue;
+                if (nb + 2 > BP_CAP) { overflow = 1; break; }
+                if (s0 > u0 && s0 < u1) bp[nb++] = s0;
+                if (s1 > u0 && s1 < u1) bp[nb++] = s1;
+            }
+        }
+    if (overflow && depth < 40) {
+        double um = 0.5 * (u0 + u1);
+        edge_force(f, a, b, c, u0, um, F, M, depth + 1);
+        edge_force(f, a, b, c, um, u1, F, M, depth + 1);
+        return;
+    }
+    qsort(bp, (size_t)nb, sizeof(double), cmp_d);
+    double len = hypot(d.x, d.y);
+    double tiny = 1e-13 * (len > 0 ? 1 : 0);
+    for (int k = 0; k + 1 < nb; k++) {
+        double s0 = bp[k], s1 = bp[k + 1];
+        if (s1 - s0 <= tiny) continue;
+        double sm = 0.5 * (s0 + s1);
+        int e = pl_fl_locate(m, (pl_vec2){a.x + sm * d.x, a.y + sm * d.y});
+        if (e < 0) continue; /* outside the fluid: p = 0 */
+        double p0 = p_in(f, e, (pl_vec2){a.x + s0 * d.x, a.y + s0 * d.y});
+        double p1 = p_in(f, e, (pl_vec2){a.x + s1 * d.x, a.y + s1 * d.y});
+        if (p0 <= 0 && p1 <= 0) continue; /* dry */
+        if (p0 < 0 || p1 < 0) {           /* wetted part only (Fig. 3-11) */
+            double sz = s0 + (s1 - s0) * p0 / (p0 - p1);
+            if (p0 < 0) piece(a, d, c, sz, s1, 0, p1, F, M);
+            else piece(a, d, c, s0, sz, p0, 0, F, M);
+        } else {
+            piece(a, d, c, s0, s1, p0, p1, F, M);
+        }
+    }
+}
+
+void pl_fl_polygon_force(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c, pl_vec2 *force,
+                         double *moment) {
+    pl_vec2 F = {0, 0};
+    double M = 0;
+    for (int k = 0; k < n; k++) edge_force(f, v[k], v[(k + 1) % n], c, 0, 1, &F, &M, 0);
+    force->x += F.x;
+    force->y += F.y;
+    *moment += M;
+}
+
+/* Pressure on the circle in element e: p(theta) = al + be cos(theta) + ga sin(theta). */
+static void circle_coeffs(const struct pl_fluid *f, int e, pl_vec2 c, double r, double *al, double *be, double *ga) {
+    const double rg = f->par.density * f->par.g;
+    *al = p_in(f, e, c);
+    /* grad p = rho g (grad h - up) */
+    const int32_t *v = &f->mesh.tri[3 * e];
+    const double *bc = &f->mesh.bc[6 * e];
+    double inv2A = 1.0 / (2 * f->mesh.area[e]);
+    double gx = (bc[0] * f->head[v[0]] + bc[1] * f->head[v[1]] + bc[2] * f->head[v[2]]) * inv2A;
+    double gy = (bc[3] * f->head[v[0]] + bc[4] * f->head[v[1]] + bc[5] * f->head[v[2]]) * inv2A;
+    int grav = !(f->par.gravity.x == 0 && f->par.gravity.y == 0);
+    *be = r * rg * (gx - (grav ? f->par.up.x : 0));
+    *ga = r * rg * (gy - (grav ? f->par.up.y : 0));
+}
+
+void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *force) {
+    const pl_fl_mesh *m = &f->mesh;
+    pl_vec2 lo = {c.x - r, c.y - r}, hi = {c.x + r, c.y + r};
+    int i0, j0, i1, j1;
+    if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
+    double th[BP_CAP];
+    int nt = 0;
+    th[nt++] = 0;
+    th[nt++] = 2 * M_PI;
+    int overflow = 0;
+    for (int j = j0; j <= j1 && !overflow; j++)
+        for (int i = i0; i <= i1 && !overflow; i++) {
+            size_t cell = (size_t)j * m->gx + i;
+            for (int k = m->cell_start[cell]; k < m->cell_start[cell + 1]; k++) {
+                int e = m->cell_items[k];
+                if (nt + 8 > BP_CAP) { overflow = 1; break; }
+                const int32_t *v = &m->tri[3 * e];
+                for (int q = 0; q < 3; q++) { /* circle x triangle edges */
+                    pl_vec2 a = m->xy[v[q]], b = m->xy[v[(q + 1) % 3]];
+                    pl_vec2 d = {b.x - a.x, b.y - a.y}, ac = {a.x - c.x, a.y - c.y};
+                    double A = d.x * d.x + d.y * d.y, B = ac.x * d.x + ac.y * d.y;
+                    double C = ac.x * ac.x + ac.y * ac.y - r * r, disc = B * B - A * C;
+                    if (A <= 0 || disc < 0) continue;
+                    double sq = sqrt(disc);
+                    for (int sgn = -1; sgn <= 1; sgn += 2) {
+                        double t = (-B + sgn * sq) / A;
+                        if (t < 0 || t > 1) continue;
+                        double ang = atan2(ac.y + t * d.y, ac.x + t * d.x);
+                        th[nt++] = ang < 0 ? ang + 2 * M_PI : ang;
+                    }
+                }
+                double al, be, ga; /* zero-pressure crossings inside this element's field */
+                circle_coeffs(f, e, c, r, &al, &be, &ga);
+                double R = hypot(be, ga);
+                if (R > 0 && fabs(al) <= R) {
+                    double phi = atan2(ga, be), w = acos(-al / R);
+                    for (int sgn = -1; sgn <= 1; sgn += 2) {
+                        double ang = fmod(phi + sgn * w + 4 * M_PI, 2 * M_PI);
+                        th[nt++] = ang;
+                    }
+                }
+            }
+        }
+    if (overflow) {
+        /* too many elements under the disc for the exact arc list: integrate with a fine
+           polygonal outline instead (error O((2 pi / 512)^2)) */
+        pl_vec2 poly[512];
+        for (int k = 0; k < 512; k++)
+            poly[k] = (pl_vec2){c.x + r * cos(2 * M_PI * k / 512), c.y + r * sin(2 * M_PI * k / 512)};
+        double M = 0;
+        pl_fl_polygon_force(f, poly, 512, c, force, &M);
+        return;
+    }
+    qsort(th, (size_t)nt, sizeof(double), cmp_d);
+    double Fx = 0, Fy = 0;
+    for (int k = 0; k + 1 < nt; k++) {
+        double a0 = th[k], a1 = th[k + 1];
+        if (a1 - a0 <= 1e-14) continue;
+        double am = 0.5 * (a0 + a1);
+        int e = pl_fl_locate(m, (pl_vec2){c.x + r * cos(am), c.y + r * sin(am)});
+        if (e < 0) continue;
+        double al, be, ga;
+        circle_coeffs(f, e, c, r, &al, &be, &ga);
+        if (al + be * cos(am) + ga * sin(am) <= 0) continue; /* dry arc */
+        double s0 = sin(a0), s1 = sin(a1), c0 = cos(a0), c1 = cos(a1);
+        double Icc = 0.5 * (a1 - a0) + 0.25 * (sin(2 * a1) - sin(2 * a0));
+        double Iss = 0.5 * (a1 - a0) - 0.25 * (sin(2 * a1) - sin(2 * a0));
+        double Isc = 0.5 * (s1 * s1 - s0 * s0);
+        Fx -= r * (al * (s1 - s0) + be * Icc + ga * Isc);
+        Fy -= r * (al * (c0 - c1) + be * Isc + ga * Iss);
+    }
+    force->x += Fx;
+    force->y += Fy;
+}
+
+void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i, pl_vec2 *force, double *moment) {
+    int sh = b->shape[i];
+    if (sh == PL_SHAPE_DISC) pl_fl_disc_force(f, b->pos[i], b->radius[i], force);
+    else if (sh == PL_SHAPE_POLYGON)
+        pl_fl_polygon_force(f, &b->verts[b->vert_offset[i]], b->vert_count[i], b->pos[i], force, moment);
+    else return;
+    if (f->par.drag && f->body_cover_start && i < b->n) {
+        const double rg = f->par.density * f->par.g;
+        for (int k = f->body_cover_start[i]; k < f->body_cover_start[i + 1]; k++) {
+            const pl_fl_cover *cv = &f->cover[k];
+            double w = cv->area * f->voidr[cv->elem] * rg;
+            force->x -= w * f->grad[2 * cv->elem];
+            force->y -= w * f->grad[2 * cv->elem + 1];
+        }
+    }
+}

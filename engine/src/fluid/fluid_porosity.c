@@ -1,0 +1,278 @@
+/* Porosity and permeability of each element from the grains covering it (seed 000 §3.6).
+ * Solid area per element: exact (triangle clipped by convex polygons, circle-triangle
+ * intersection for discs; default) or the thesis's pixellation (pixel centres tested against
+ * the element and the grains, union of grains, resolution settable). The void ratio
+ * e = (A - A_s) / A_s (eq. 3.9) is clamped to 0.01..99 and mapped to a conductivity by
+ * Kozeny-Carman e^3 / (1 + e) (eq. 3.8) between FLUID_PERM_LOW and FLUID_PERM_HIGH. */
+#include "fluid/fluid_internal.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double cross(pl_vec2 a, pl_vec2 b) { return a.x * b.y - a.y * b.x; }
+
+/* Signed area of disc(0, r) intersected with triangle (0, a, b). */
+static double tri_circle_signed(pl_vec2 a, pl_vec2 b, double r) {
+    double r2 = r * r;
+    double da = a.x * a.x + a.y * a.y, db = b.x * b.x + b.y * b.y;
+    if (da <= r2 && db <= r2) return 0.5 * cross(a, b);
+    pl_vec2 d = {b.x - a.x, b.y - a.y};
+    double A = d.x * d.x + d.y * d.y, B = a.x * d.x + a.y * d.y, C = da - r2;
+#define SECTOR(u, v) (0.5 * r2 * atan2(cross(u, v), (u).x * (v).x + (u).y * (v).y))
+    if (A <= 0) return 0;
+    double disc = B * B - A * C;
+    if (da <= r2) { /* a inside, b outside: exit point */
+        double t = (-B + sqrt(fmax(disc, 0))) / A;
+        pl_vec2 p = {a.x + t * d.x, a.y + t * d.y};
+        return 0.5 * cross(a, p) + SECTOR(p, b);
+    }
+    if (db <= r2) { /* a outside, b inside: entry point */
+        double t = (-B - sqrt(fmax(disc, 0))) / A;
+        pl_vec2 p = {a.x + t * d.x, a.y + t * d.y};
+        return SECTOR(a, p) + 0.5 * cross(p, b);
+    }
+    if (disc <= 0) return SECTOR(a, b);
+    double sq = sqrt(disc), t1 = (-B - sq) / A, t2 = (-B + sq) / A;
+    if (t1 >= 1 || t2 <= 0) return SECTOR(a, b);
+    pl_vec2 p1 = {a.x + t1 * d.x, a.y + t1 * d.y}, p2 = {a.x + t2 * d.x, a.y + t2 * d.y};
+    return SECTOR(a, p1) + 0.5 * cross(p1, p2) + SECTOR(p2, b);
+#undef SECTOR
+}
+
+double pl_fl_tri_disc_area(const pl_vec2 t[3], pl_vec2 c, double r) {
+    double s = 0;
+    for (int k = 0; k < 3; k++) {
+        pl_vec2 a = {t[k].x - c.x, t[k].y - c.y}, b = {t[(k + 1) % 3].x - c.x, t[(k + 1) % 3].y - c.y};
+        s += tri_circle_signed(a, b, r);
+    }
+    return fabs(s);
+}
+
+#define CLIP_MAX (2 * PL_MAX_POLY_VERTICES_FL + 8)
+#define PL_MAX_POLY_VERTICES_FL 64
+
+/* Area of a convex polygon (counter-clockwise) clipped by a triangle (Sutherland-Hodgman). */
+double pl_fl_tri_poly_area(const pl_vec2 t[3], const pl_vec2 *v, int n) {
+    pl_vec2 buf[2][CLIP_MAX];
+    int cnt = n < CLIP_MAX - 4 ? n : CLIP_MAX - 4;
+    memcpy(buf[0], v, sizeof(pl_vec2) * (size_t)cnt);
+    int cur = 0;
+    for (int k = 0; k < 3 && cnt > 0; k++) {
+        pl_vec2 a = t[k], b = t[(k + 1) % 3];
+        pl_vec2 ab = {b.x - a.x, b.y - a.y};
+        const pl_vec2 *in = buf[cur];
+        pl_vec2 *out = buf[1 - cur];
+        int m = 0;
+        for (int i = 0; i < cnt; i++) {
+            pl_vec2 p = in[i], q = in[(i + 1) % cnt];
+            double sp = cross(ab, (pl_vec2){p.x - a.x, p.y - a.y});
+            double sq = cross(ab, (pl_vec2){q.x - a.x, q.y - a.y});
+            if (sp >= 0) out[m++] = p;
+            if ((sp >= 0) != (sq >= 0)) {
+                double u = sp / (sp - sq);
+                out[m++] = (pl_vec2){p.x + u * (q.x - p.x), p.y + u * (q.y - p.y)};
+            }
+            if (m >= CLIP_MAX - 1) break;
+        }
+        cnt = m;
+        cur = 1 - cur;
+    }
+    double a2 = 0;
+    for (int i = 0; i < cnt; i++) a2 += cross(buf[cur][i], buf[cur][(i + 1) % cnt]);
+    return a2 > 0 ? 0.5 * a2 : 0;
+}
+
+double pl_fl_porosity_3d(double n2d) {
+    /* DESIGN §3: maps hexagonal discs (n2 = 0.0931) to FCC spheres (n3 = 0.2595) */
+    double s = 1 - n2d;
+    if (s < 0) s = 0;
+    return 1 - 2.0 / sqrt(M_PI * sqrt(3.0)) * s * sqrt(s);
+}
+
+static double kc(double e) { return e * e * e / (1 + e); }
+
+double pl_fl_kc_map(const pl_fl_params *p, double e) {
+    if (p->kc_mode == 1) {
+        double k = p->kc_c1 * kc(e);
+        return k < p->perm_low ? p->perm_low : (k > p->perm_high ? p->perm_high : k);
+    }
+    double f0 = kc(0.01), f1 = kc(99.0);
+    return p->perm_low + (p->perm_high - p->perm_low) * (kc(e) - f0) / (f1 - f0);
+}
+
+static int point_in_body(const pl_fl_bodies *b, int i, pl_vec2 p) {
+    if (b->shape[i] == PL_SHAPE_DISC) {
+        double dx = p.x - b->pos[i].x, dy = p.y - b->pos[i].y;
+        return dx * dx + dy * dy <= b->radius[i] * b->radius[i];
+    }
+    const pl_vec2 *v = &b->verts[b->vert_offset[i]];
+    int n = b->vert_count[i];
+    for (int k = 0; k < n; k++) {
+        pl_vec2 a = v[k], c = v[(k + 1) % n];
+        if ((c.x - a.x) * (p.y - a.y) - (c.y - a.y) * (p.x - a.x) < 0) return 0;
+    }
+    return 1;
+}
+
+static int push_cover(struct pl_fluid *f, int body, int elem, double area) {
+    if (f->ncover == f->cover_cap) {
+        int nc = f->cover_cap ? 2 * f->cover_cap : 4096;
+        pl_fl_cover *p = realloc(f->cover, sizeof(pl_fl_cover) * (size_t)nc);
+        if (!p) return 0;
+        f->cover = p;
+        f->cover_cap = nc;
+    }
+    f->cover[f->ncover++] = (pl_fl_cover){body, elem, area};
+    return 1;
+}
+
+/* Pixel solid areas for the candidate pairs of one element (union of grains). */
+static void pixel_element(struct pl_fluid *f, const pl_fl_bodies *b, int e, int c0, int c1, int32_t *pair_of) {
+    const pl_fl_mesh *m = &f->mesh;
+    const int32_t *v = &m->tri[3 * e];
+    pl_vec2 t0 = m->xy[v[0]], t1 = m->xy[v[1]], t2 = m->xy[v[2]];
+    double lx = fmin(t0.x, fmin(t1.x, t2.x)), hx = fmax(t0.x, fmax(t1.x, t2.x));
+    double ly = fmin(t0.y, fmin(t1.y, t2.y)), hy = fmax(t0.y, fmax(t1.y, t2.y));
+    double side = fmax(hx - lx, hy - ly) / f->par.pixels;
+    int nx = (int)ceil((hx - lx) / side), ny = (int)ceil((hy - ly) / side);
+    double pa = side * side;
+    int in_tri = 0, solid = 0;
+    for (int k = c0; k < c1; k++) f->cover[pair_of[k]].area = 0;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            pl_vec2 p = {lx + (i + 0.5) * side, ly + (j + 0.5) * side};
+            double l[3];
+            pl_fl_barycentric(m, e, p, l);
+            if (l[0] < 0 || l[1] < 0 || l[2] < 0) continue;
+            in_tri++;
+            int hit = 0;
+            for (int k = c0; k < c1; k++) {
+                pl_fl_cover *cv = &f->cover[pair_of[k]];
+                if (point_in_body(b, cv->body, p)) {
+                    if (!hit) cv->area += pa; /* a pixel counts once, for the first grain */
+                    hit = 1;
+                }
+            }
+            solid += hit;
+        }
+    /* the thesis measures the element area with the same pixels (eq. 3.9); scale to the
+       exact area so that the ratio solid/element is the pixel ratio */
+    double scale = in_tri > 0 ? m->area[e] / (in_tri * pa) : 0;
+    for (int k = c0; k < c1; k++) f->cover[pair_of[k]].area *= scale;
+    f->solid[e] = solid * pa * scale;
+}
+
+pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
+    const pl_fl_mesh *m = &f->mesh;
+    double t0 = pl_fl_now();
+    memset(f->solid, 0, sizeof(double) * (size_t)m->ne);
+    f->ncover = 0;
+    if (b->n + 1 > f->body_cap) {
+        int nc = b->n + 1 + 64;
+        int32_t *p = realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
+        if (!p) return PL_ERR_NOMEM;
+        f->body_cover_start = p;
+        f->body_cap = nc;
+    }
+    for (int i = 0; i < b->n; i++) {
+        f->body_cover_start[i] = f->ncover;
+        int sh = b->shape[i];
+        if (sh != PL_SHAPE_DISC && sh != PL_SHAPE_POLYGON) continue;
+        pl_vec2 c = b->pos[i];
+        double r = b->radius[i];
+        pl_vec2 lo = {c.x - r, c.y - r}, hi = {c.x + r, c.y + r};
+        const pl_vec2 *pv = NULL;
+        int pn = 0;
+        if (sh == PL_SHAPE_POLYGON) {
+            pv = &b->verts[b->vert_offset[i]];
+            pn = b->vert_count[i];
+            lo = hi = pv[0];
+            for (int k = 1; k < pn; k++) {
+                lo.x = fmin(lo.x, pv[k].x); lo.y = fmin(lo.y, pv[k].y);
+                hi.x = fmax(hi.x, pv[k].x); hi.y = fmax(hi.y, pv[k].y);
+            }
+        }
+        int i0, j0, i1, j1;
+        if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) continue;
+        if (f->stamp_gen >= 2000000000) {
+            memset(f->stamp, 0, sizeof(int32_t) * (size_t)m->ne);
+            f->stamp_gen = 0;
+        }
+        const int32_t gen = ++f->stamp_gen;
+        for (int gj = j0; gj <= j1; gj++)
+            for (int gi = i0; gi <= i1; gi++) {
+                size_t cell = (size_t)gj * m->gx + gi;
+                for (int k = m->cell_start[cell]; k < m->cell_start[cell + 1]; k++) {
+                    int e = m->cell_items[k];
+                    const int32_t *v = &m->tri[3 * e];
+                    pl_vec2 t[3] = {m->xy[v[0]], m->xy[v[1]], m->xy[v[2]]};
+                    if (fmax(t[0].x, fmax(t[1].x, t[2].x)) < lo.x || fmin(t[0].x, fmin(t[1].x, t[2].x)) > hi.x ||
+                        fmax(t[0].y, fmax(t[1].y, t[2].y)) < lo.y || fmin(t[0].y, fmin(t[1].y, t[2].y)) > hi.y)
+                        continue;
+                    /* an element spanning several cells is met once per cell: keep the first */
+                    if (f->stamp[e] == gen) continue;
+                    f->stamp[e] = gen;
+                    double a = 1; /* pixel method: computed per element below */
+                    if (f->par.porosity_method == 0) {
+                        a = sh == PL_SHAPE_DISC ? pl_fl_tri_disc_area(t, c, r) : pl_fl_tri_poly_area(t, pv, pn);
+                        if (!(a > 0)) continue;
+                        f->solid[e] += a;
+                    }
+                    if (!push_cover(f, i, e, a)) return PL_ERR_NOMEM;
+                }
+            }
+    }
+    f->body_cover_start[b->n] = f->ncover;
+    if (f->par.porosity_method == 1 && f->ncover > 0) {
+        /* group pairs by element (counting sort) and pixellate each element once */
+        int32_t *cnt = calloc((size_t)m->ne + 1, sizeof(int32_t));
+        int32_t *pair_of = malloc(sizeof(int32_t) * (size_t)f->ncover);
+        if (!cnt || !pair_of) { free(cnt); free(pair_of); return PL_ERR_NOMEM; }
+        for (int k = 0; k < f->ncover; k++) cnt[f->cover[k].elem + 1]++;
+        for (int e = 0; e < m->ne; e++) cnt[e + 1] += cnt[e];
+        int32_t *fill = malloc(sizeof(int32_t) * (size_t)m->ne);
+        if (!fill) { free(cnt); free(pair_of); return PL_ERR_NOMEM; }
+        memcpy(fill, cnt, sizeof(int32_t) * (size_t)m->ne);
+        for (int k = 0; k < f->ncover; k++) pair_of[fill[f->cover[k].elem]++] = k;
+        for (int e = 0; e < m->ne; e++)
+            if (cnt[e + 1] > cnt[e]) pixel_element(f, b, e, cnt[e], cnt[e + 1], pair_of);
+        free(fill); free(cnt); free(pair_of);
+    }
+    /* void ratio (eq. 3.9) with the thesis's clamp 0.01 A <= A_s <= 0.99 A */
+    for (int e = 0; e < m->ne; e++) {
+        double A = m->area[e], As = f->solid[e];
+        if (As < 0.01 * A) As = 0.01 * A;
+        if (As > 0.99 * A) As = 0.99 * A;
+        double e2 = (A - As) / As;
+        f->voidr[e] = e2;
+        double n = 1 - As / A;
+        if (f->par.porosity_map == 1) n = pl_fl_porosity_3d(n);
+        f->porosity[e] = n;
+    }
+    f->stats.t_porosity += pl_fl_now() - t0;
+    return PL_OK;
+}
+
+void pl_fl_update_permeability(struct pl_fluid *f) {
+    const pl_fl_params *p = &f->par;
+    const int ne = f->mesh.ne;
+    double conv = p->perm_units == 1 ? p->density * p->g / p->viscosity : 1.0;
+    for (int e = 0; e < ne; e++) {
+        double k;
+        if (p->perm_mode == 1) {
+            double n = f->porosity[e];
+            double ev = n / (1 - n);
+            if (ev < 0.01) ev = 0.01;
+            if (ev > 99) ev = 99;
+            k = pl_fl_kc_map(p, ev);
+        } else if (p->perm_mode == 2 && f->perm_user) {
+            k = f->perm_user[e];
+        } else {
+            k = p->perm_high;
+        }
+        k *= conv;
+        f->perm[e] = k;
+        if (k != f->perm_assembled[e]) f->k_dirty = 1;
+    }
+    if (p->mass_consistent != f->assembled_par.mass_consistent) f->k_dirty = 1;
+}
