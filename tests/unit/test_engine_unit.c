@@ -1,0 +1,205 @@
+/* Unit tests of the engine core: geometry basics, material combination rules, flags, the
+ * neighbour list against a brute-force search, allocation-free stepping, state hashing and
+ * determinism. */
+#include "../physics/common.h"
+#include "dem/world_internal.h"
+#include "geom/polygon.h"
+#include "harness.h"
+#include <stdlib.h>
+#include <string.h>
+
+static int polygon_mass_properties(void) {
+    /* rectangle w x h: A = w h, J = A (w^2 + h^2) / 12 about the centroid */
+    const pl_vec2 r[] = {{1, 1}, {4, 1}, {4, 3}, {1, 3}};
+    ENSURE_NEAR(pl_poly_signed_area(r, 4), 6, 1e-12);
+    const pl_vec2 c = pl_poly_centroid(r, 4);
+    ENSURE_NEAR(c.x, 2.5, 1e-12);
+    ENSURE_NEAR(c.y, 2.0, 1e-12);
+    ENSURE_NEAR(pl_poly_polar_moment(r, 4), 6 * (9 + 4) / 12.0, 1e-12);
+    ENSURE(pl_poly_is_convex_ccw(r, 4));
+    const pl_vec2 cw[] = {{1, 1}, {1, 3}, {4, 3}, {4, 1}};
+    ENSURE(!pl_poly_is_convex_ccw(cw, 4));
+    const pl_vec2 dart[] = {{0, 0}, {2, 1}, {4, 0}, {2, 3}};
+    ENSURE(!pl_poly_is_convex_ccw(dart, 4));
+    return 0;
+}
+
+static int young_modulus_stiffness(void) {
+    /* seed 003 eq. 2.36: k = E l / 2R, l = 2 sqrt(R^2 - (R - d)^2), d = f R */
+    pl_world *w = pl_world_create(NULL);
+    pl_material_def m = pl_default_material_def();
+    m.name = "rock";
+    m.young = 1e9;
+    m.young_overlap = 0.05;
+    const int id = pl_world_add_material(w, &m);
+    ENSURE(id == 0);
+    const double R = 0.37, d = 0.05 * R, l = 2 * sqrt(R * R - (R - d) * (R - d));
+    ENSURE_REL(w->pair_params[0].kn, 1e9 * l / (2 * R), 1e-12);
+    ENSURE_REL(w->pair_params[0].ks, 2.0 / 3.0 * 1e9 * l / (2 * R), 1e-12);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+static int pair_combination(void) {
+    pl_world *w = pl_world_create(NULL);
+    const int a = add_material(w, "a", 1000, 1e6, 5e5, 0.3, 10, -1);
+    const int b = add_material(w, "b", 1000, 3e6, 1e6, 0.6, 30, -1);
+    const pl_pair_params *p = pl__pair_params(w, a, b);
+    ENSURE_REL(p->kn, 2 * 1e6 * 3e6 / 4e6, 1e-12);
+    ENSURE_NEAR(p->friction, 0.3, 0);
+    ENSURE_NEAR(p->cn, 20, 1e-12);
+    pl_pair_def o = pl_default_pair_def();
+    o.kn = 7e6;
+    ENSURE(pl_world_set_pair(w, a, b, &o) == PL_OK);
+    ENSURE_NEAR(pl__pair_params(w, b, a)->kn, 7e6, 0);
+    ENSURE(pl_world_set_pair(w, a, 5, &o) == PL_ERR_ARG);
+    /* bad material input is refused with a message naming the range */
+    pl_material_def bad = pl_default_material_def();
+    bad.name = "neg";
+    bad.density = -1;
+    bad.kn = 1e6;
+    ENSURE(pl_world_add_material(w, &bad) == PL_ERR_ARG);
+    ENSURE(strstr(pl_world_last_error(w), "density must be > 0") != NULL);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+static int flags_known_unknown_notbuilt(void) {
+    pl_world *w = pl_world_create(NULL);
+    ENSURE(pl_world_set_flag(w, "GRAVITY_Y", -10) == PL_OK);
+    ENSURE_NEAR(w->def.gravity.y, -10, 0);
+    ENSURE(pl_world_set_flag(w, "MAX_DT_CR", 0.001) == PL_OK);
+    ENSURE_NEAR(w->def.max_dt, 0.001, 0);
+    ENSURE(pl_world_set_flag(w, "GRAVITY_Z", 1) == PL_ERR_UNKNOWN);
+    ENSURE(strstr(pl_world_last_error(w), "valid flags: TIMESTEPS") != NULL);
+    ENSURE(pl_world_set_flag(w, "PRINT_INT", 0) == PL_ERR_ARG);
+    ENSURE(strstr(pl_world_last_error(w), "[1,") != NULL);
+    ENSURE(pl_world_set_flag(w, "EXODUSFLAG", 1) == PL_ERR_NOT_BUILT);
+    ENSURE(strstr(pl_world_last_error(w), "not built") != NULL);
+    ENSURE(pl_world_set_flag(w, "EXODUSFLAG", 0) == PL_OK);
+    double v;
+    ENSURE(pl_world_get_flag(w, "GRAVITY_Y", &v) == PL_OK && v == -10);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+/* bidisperse discs on a jittered square lattice in a box, as LIGGGHTS' packing preparation */
+static pl_world *random_box(uint64_t seed, int n) {
+    pl_world *w = pl_world_create(NULL);
+    const int m = add_material(w, "grain", 2500, 1e7, -1, 0.5, 0, -1);
+    add_wall(w, m, 0, 0, 1, 0);
+    add_wall(w, m, 0, 0, 0, 3);
+    add_wall(w, m, 1, 0, 1, 3);
+    uint64_t s = seed;
+    const int per_row = 32;
+    for (int i = 0; i < n; i++) {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        const double u = (double)(s >> 11) / 9007199254740992.0 - 0.5;
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        const double v = (double)(s >> 11) / 9007199254740992.0 - 0.5;
+        const double x = 0.02 + 0.03 * (i % per_row) + 0.004 * u, y = 0.02 + 0.03 * (i / per_row) + 0.004 * v;
+        add_disc(w, m, x, y, (s >> 20) % 2 ? 0.012 : 0.009);
+    }
+    return w;
+}
+
+static int brute_force_contacts(const pl_world *w) {
+    int c = 0;
+    for (int a = 0; a < w->n; a++)
+        for (int b = a + 1; b < w->n; b++) {
+            if (w->shape[a] == PL_SHAPE_DISC && w->shape[b] == PL_SHAPE_DISC) {
+                const double dx = w->pos[b].x - w->pos[a].x, dy = w->pos[b].y - w->pos[a].y;
+                if (hypot(dx, dy) < w->radius[a] + w->radius[b]) c++;
+            } else if (w->shape[a] == PL_SHAPE_SEGMENT && w->shape[b] == PL_SHAPE_DISC) {
+                const pl_vec2 *v = &w->verts_world[w->vert_offset[a]];
+                const double ex = v[1].x - v[0].x, ey = v[1].y - v[0].y;
+                double t = ((w->pos[b].x - v[0].x) * ex + (w->pos[b].y - v[0].y) * ey) / (ex * ex + ey * ey);
+                t = t < 0 ? 0 : t > 1 ? 1 : t;
+                if (hypot(w->pos[b].x - v[0].x - t * ex, w->pos[b].y - v[0].y - t * ey) < w->radius[b]) c++;
+            }
+        }
+    return c;
+}
+
+static int neighbour_list_finds_every_contact(void) {
+    pl_world *w = random_box(7, 600);
+    for (int k = 0; k < 10; k++) {
+        if (pl_world_step(w, 500) != PL_OK) {
+            fprintf(stderr, "  %s\n", pl_world_last_error(w));
+            return 1;
+        }
+        /* contacts counted by the engine are those found at the last force evaluation; compare
+           with a brute-force search on the same positions: step once more without moving */
+        const int bf = brute_force_contacts(w);
+        /* evaluate the contacts at the current positions (the history update is harmless here) */
+        pl__neighbor_update(w);
+        pl__compute_contact_forces(w, w->dt);
+        const int eng = pl_world_contact_count(w);
+        if (eng != bf) {
+            fprintf(stderr, "  after %d steps: engine %d contacts, brute force %d\n", 500 * (k + 1), eng, bf);
+            return 1;
+        }
+    }
+    fprintf(stderr, "  600 discs, 5000 steps: %lld rebuilds, %d contacts at the end, all found\n",
+            (long long)w->rebuilds, pl_world_contact_count(w));
+    ENSURE(w->rebuilds < 5000 / 2);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+static int determinism_same_hash(void) {
+    pl_world *a = random_box(11, 300), *b = random_box(11, 300), *c = random_box(12, 300);
+    ENSURE(pl_world_step(a, 3000) == PL_OK);
+    ENSURE(pl_world_step(b, 1000) == PL_OK);
+    ENSURE(pl_world_step(b, 2000) == PL_OK);
+    ENSURE(pl_world_step(c, 3000) == PL_OK);
+    const uint64_t ha = pl_world_state_hash(a), hb = pl_world_state_hash(b), hc = pl_world_state_hash(c);
+    fprintf(stderr, "  hashes %016llx %016llx (other seed %016llx)\n", (unsigned long long)ha, (unsigned long long)hb,
+            (unsigned long long)hc);
+    ENSURE(ha == hb);
+    ENSURE(ha != hc);
+    pl_world_destroy(&a);
+    pl_world_destroy(&b);
+    pl_world_destroy(&c);
+    return 0;
+}
+
+/* A pile settling with friction: every joule is accounted for. The balance error of the
+   incremental Coulomb spring is first order in dt (the slip is measured on the half-step
+   velocity before the force acts); measured 2.8 %, 1.8 %, 0.9 % of the dissipated energy at
+   dt = 0.1, 0.05, 0.02 x critical. Frictionless runs conserve energy to 4e-4. */
+static double settle_balance(double safety, double mu, double *dissipated) {
+    pl_world *w = random_box(5, 300);
+    w->def.dt_safety = safety;
+    w->materials[0].def.friction = mu;
+    pl__update_pair_params(w);
+    w->dt = 0;
+    if (pl_world_step(w, (int)(0.8 / pl_world_dt(w))) != PL_OK) return INFINITY;
+    const pl_energy e = pl_world_energy(w);
+    *dissipated = e.damped + e.friction + fabs(e.gravitational);
+    fprintf(stderr, "  mu %.1f dt %.2f x critical: kinetic %.4g, grav %.4g, elastic %.4g, friction %.4g: balance %.3g\n",
+            mu, safety, e.kinetic, e.gravitational, e.elastic, e.friction, e.balance);
+    pl_world_destroy(&w);
+    return e.balance;
+}
+
+static int energy_balance_settling(void) {
+    double d0, d1, d2;
+    const double b0 = settle_balance(0.1, 0.0, &d0);
+    ENSURE(fabs(b0) < 1e-3 * d0);
+    const double b1 = settle_balance(0.1, 0.5, &d1), b2 = settle_balance(0.02, 0.5, &d2);
+    ENSURE(fabs(b1) < 0.04 * d1);
+    ENSURE(fabs(b2) < 0.4 * fabs(b1)); /* converges with dt */
+    return 0;
+}
+
+int main(void) {
+    RUN(polygon_mass_properties);
+    RUN(young_modulus_stiffness);
+    RUN(pair_combination);
+    RUN(flags_known_unknown_notbuilt);
+    RUN(neighbour_list_finds_every_contact);
+    RUN(determinism_same_hash);
+    RUN(energy_balance_settling);
+    return pl_test_report();
+}
