@@ -164,10 +164,11 @@ static int determinism_same_hash(void) {
     return 0;
 }
 
-/* A pile settling with friction: every joule is accounted for. The balance error of the
-   incremental Coulomb spring is first order in dt (the slip is measured on the half-step
-   velocity before the force acts); measured 2.8 %, 1.8 %, 0.9 % of the dissipated energy at
-   dt = 0.1, 0.05, 0.02 x critical. Frictionless runs conserve energy to 4e-4. */
+/* A pile settling with friction: every joule is accounted for. Dissipation is measured as the
+   work of the dashpot and Coulomb-spring force parts with the mid-step velocities (the
+   identity the central difference satisfies for kinetic energy), so the balance closes to the
+   scheme's accuracy: measured 5e-4 of the energy exchanged at dt = 0.1 x critical and 5e-6 at
+   0.02 (it was 2.8 % when the slip was tallied from the spring's trial force). */
 static double settle_balance(double safety, double mu, double *dissipated) {
     pl_world *w = random_box(5, 300);
     w->def.dt_safety = safety;
@@ -188,8 +189,8 @@ static int energy_balance_settling(void) {
     const double b0 = settle_balance(0.1, 0.0, &d0);
     ENSURE(fabs(b0) < 1e-3 * d0);
     const double b1 = settle_balance(0.1, 0.5, &d1), b2 = settle_balance(0.02, 0.5, &d2);
-    ENSURE(fabs(b1) < 0.04 * d1);
-    ENSURE(fabs(b2) < 0.4 * fabs(b1)); /* converges with dt */
+    ENSURE(fabs(b1) < 2e-3 * d1);
+    ENSURE(fabs(b2) < 0.1 * fabs(b1)); /* converges with dt */
     return 0;
 }
 

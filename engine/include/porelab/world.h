@@ -221,6 +221,22 @@ pl_energy pl_world_energy(const pl_world *w);
 /// Total linear momentum of dynamic bodies, kg m/s.
 pl_vec2 pl_world_momentum(const pl_world *w);
 
+/// Average stress tensor of the grains whose centroids lie in the rectangle [lo, hi]:
+/// sigma_ij = (1/A) sum over their contacts of f_i l_j (branch vector l from the centroid to the
+/// contact point, f the contact force on the body), A the rectangle's area; compression
+/// positive. out = {s_xx, s_xy, s_yx, s_yy} in Pa (N/m per unit thickness over m^2... i.e. Pa x m).
+/// Returns the number of bodies counted.
+int pl_world_stress_in_region(const pl_world *w, pl_vec2 lo, pl_vec2 hi, double out[4]);
+
+/// Mean coordination number of dynamic bodies: 2 x (contacts between dynamic bodies) + contacts
+/// with walls or fixed bodies, divided by the number of dynamic bodies.
+double pl_world_coordination_number(const pl_world *w);
+
+/// Writes bodies (polygons as cells with velocity, angle, material, id) and contacts (lines
+/// with normal and tangential force) as VTK XML unstructured grids: PREFIX_bodies.vtu and
+/// PREFIX_contacts.vtu. Returns PL_OK or PL_ERR_IO with a message.
+pl_status pl_world_write_vtk(const pl_world *w, const char *prefix);
+
 /// 64-bit hash of the full dynamic state (positions, velocities, contact history, time).
 uint64_t pl_world_state_hash(const pl_world *w);
 

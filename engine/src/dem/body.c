@@ -32,6 +32,7 @@ int pl__ensure_body_capacity(pl_world *w, int need) {
     GROW(w->radius, cap); GROW(w->area, cap); GROW(w->shape, cap); GROW(w->motion, cap);
     GROW(w->material, cap); GROW(w->user_id, cap); GROW(w->law, cap);
     GROW(w->load, cap); GROW(w->load_moment, cap); GROW(w->x0, cap);
+    GROW(w->fdamp, cap); GROW(w->fshear, cap); GROW(w->tdamp, cap); GROW(w->tshear, cap);
     GROW(w->vert_offset, cap); GROW(w->vert_count, cap);
     GROW(w->pos_at_build, cap); GROW(w->angle_at_build, cap);
     w->cap = cap;

@@ -34,8 +34,6 @@ static void apply_law(pl_world *w, pl_pair *p, const pl_pair_params *pp, double 
     const double smax = pp->friction * fn_el + pp->cohesion;
     if (fabs(fs) > smax) {
         const double lim = smax > 0 ? smax : 0;
-        const double slip = (fabs(fs) - lim) / (pp->ks > 0 ? pp->ks : 1);
-        w->e_friction += lim * slip;
         fs = fs > 0 ? lim : -lim;
         fd = 0;
     }
@@ -47,17 +45,33 @@ static void apply_law(pl_world *w, pl_pair *p, const pl_pair_params *pp, double 
     p->normal = n;
     p->point = point;
     p->touching = 1;
-    p->elastic = 0.5 * fn_el * delta + (pp->ks > 0 ? 0.5 * fs * fs / pp->ks : 0);
-    w->e_damped += (cn * vn * vn + cs * (fd != 0 ? vt * vt : 0)) * dt;
+    const double es = pp->ks > 0 ? 0.5 * fs * fs / pp->ks : 0;
+    p->elastic = 0.5 * fn_el * delta + es;
+    w->e_shear += es;
     const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
+    const pl_vec2 ra = {point.x - w->pos[a].x, point.y - w->pos[a].y};
+    const pl_vec2 rb = {point.x - w->pos[b].x, point.y - w->pos[b].y};
     w->force[b].x += F.x;
     w->force[b].y += F.y;
     w->force[a].x -= F.x;
     w->force[a].y -= F.y;
-    const pl_vec2 ra = {point.x - w->pos[a].x, point.y - w->pos[a].y};
-    const pl_vec2 rb = {point.x - w->pos[b].x, point.y - w->pos[b].y};
     w->torque[b] += cross2(rb, F);
     w->torque[a] -= cross2(ra, F);
+    /* split for the energy tallies: dashpot part and tangential spring part */
+    const pl_vec2 Fd = {fn_d * n.x + fd * t.x, fn_d * n.y + fd * t.y};
+    const pl_vec2 Fs = {fs * t.x, fs * t.y};
+    w->fdamp[b].x += Fd.x;
+    w->fdamp[b].y += Fd.y;
+    w->fdamp[a].x -= Fd.x;
+    w->fdamp[a].y -= Fd.y;
+    w->tdamp[b] += cross2(rb, Fd);
+    w->tdamp[a] -= cross2(ra, Fd);
+    w->fshear[b].x += Fs.x;
+    w->fshear[b].y += Fs.y;
+    w->fshear[a].x -= Fs.x;
+    w->fshear[a].y -= Fs.y;
+    w->tshear[b] += cross2(rb, Fs);
+    w->tshear[a] -= cross2(ra, Fs);
     const double ratio = delta / rmin;
     if (ratio > w->worst_overlap_ratio) {
         w->worst_overlap_ratio = ratio;

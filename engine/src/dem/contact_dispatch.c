@@ -4,6 +4,8 @@
 
 void pl__compute_contact_forces(pl_world *w, double dt) {
     w->worst_overlap_ratio = 0;
+    w->e_shear_prev = w->e_shear;
+    w->e_shear = 0;
     w->worst_a = w->worst_b = -1;
     const pl_pair_params *params = w->pair_params;
     for (int k = 0; k < w->pair_n; k++) {

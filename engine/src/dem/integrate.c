@@ -45,14 +45,26 @@ void pl__apply_motion_laws(pl_world *w, double t, double dt) {
     }
 }
 
+/* Energy dissipated by the contact dashpots and by Coulomb sliding over one step, from the work
+   of those force parts with the mid-step velocities (the same identity the central difference
+   satisfies for kinetic energy, so the balance closes to the scheme's own accuracy):
+     D_damp = -sum_i (F_damp,i . v_mid,i + M_damp,i w_mid,i) dt
+     D_fric = -sum_i (F_shear,i . v_mid,i + M_shear,i w_mid,i) dt - (E_shear,n - E_shear,n-1)  */
+static inline void tally_contact_dissipation(pl_world *w, int i, pl_vec2 vm, double wm, double dt, double *damped,
+                                             double *work_shear) {
+    *damped -= (w->fdamp[i].x * vm.x + w->fdamp[i].y * vm.y + w->tdamp[i] * wm) * dt;
+    *work_shear += (w->fshear[i].x * vm.x + w->fshear[i].y * vm.y + w->tshear[i] * wm) * dt;
+}
+
 void pl__integrate(pl_world *w, double dt) {
     const pl_vec2 g = w->def.gravity;
     const double C = w->def.global_c, Cr = w->def.global_c_rot, alpha = w->def.rayleigh_alpha;
     const double lam = w->def.local_damping;
-    double damped = 0, external = 0;
+    double damped = 0, external = 0, work_shear = 0;
     for (int i = 0; i < w->n; i++) {
         if (w->motion[i] == PL_MOTION_FIXED) continue;
         if (w->motion[i] == PL_MOTION_PRESCRIBED || w->inv_mass[i] == 0) {
+            tally_contact_dissipation(w, i, w->vel[i], w->omega[i], dt, &damped, &work_shear);
             w->pos[i].x += w->vel[i].x * dt;
             w->pos[i].y += w->vel[i].y * dt;
             w->angle[i] += w->omega[i] * dt;
@@ -88,6 +100,7 @@ void pl__integrate(pl_world *w, double dt) {
         damped += (c * (vm.x * vm.x + vm.y * vm.y) - (Fl.x * vm.x + Fl.y * vm.y)) * dt;
         if (I > 0) damped += ((Cr + alpha * I) * wm * wm - Tl * wm) * dt;
         external += (w->load[i].x * vm.x + w->load[i].y * vm.y + w->load_moment[i] * wm) * dt;
+        tally_contact_dissipation(w, i, vm, wm, dt, &damped, &work_shear);
         w->vel[i] = v1;
         w->omega[i] = w1;
         w->pos[i].x += v1.x * dt;
@@ -96,5 +109,6 @@ void pl__integrate(pl_world *w, double dt) {
         if (w->vert_count[i]) pl__update_world_vertices(w, i);
     }
     w->e_damped += damped;
+    w->e_friction += -work_shear - (w->e_shear - w->e_shear_prev);
     w->e_external += external;
 }

@@ -10,4 +10,6 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/timestep.c
   src/dem/guards.c
   src/dem/flags.c
-  src/dem/diagnostics.c)
+  src/dem/diagnostics.c
+  src/dem/stress.c
+  src/dem/vtk.c)

@@ -59,7 +59,7 @@ void pl_world_destroy(pl_world **wp) {
     free(w->mass); free(w->inv_mass); free(w->inertia); free(w->inv_inertia);
     free(w->radius); free(w->area); free(w->shape); free(w->motion);
     free(w->material); free(w->user_id); free(w->law); free(w->load); free(w->load_moment);
-    free(w->x0); free(w->vert_offset); free(w->vert_count);
+    free(w->x0); free(w->fdamp); free(w->fshear); free(w->tdamp); free(w->tshear); free(w->vert_offset); free(w->vert_count);
     free(w->verts_local); free(w->verts_world);
     free(w->pairs); free(w->pairs_scratch);
     free(w->pos_at_build); free(w->angle_at_build);
@@ -123,6 +123,8 @@ pl_status pl_world_step(pl_world *w, int nsteps) {
         for (int i = 0; i < w->n; i++) {
             w->force[i] = w->load[i];
             w->torque[i] = w->load_moment[i];
+            w->fdamp[i] = w->fshear[i] = (pl_vec2){0, 0};
+            w->tdamp[i] = w->tshear[i] = 0;
         }
         pl__compute_contact_forces(w, dt);
         if (w->fluid) {

@@ -90,6 +90,11 @@ struct pl_world {
     int32_t *material, *user_id;
     pl_motion *law;               /* per body (prescribed bodies) */
     pl_vec2 *load; double *load_moment; /* constant external loads */
+    /* parts of the contact force that dissipate or store energy, for exact energy tallies:
+       dashpot forces, and the tangential (Coulomb spring) forces, per body and step */
+    pl_vec2 *fdamp, *fshear;
+    double *tdamp, *tshear;
+    double e_shear, e_shear_prev;  /* energy in the tangential springs now / one step ago */
     pl_vec2 *x0;                  /* reference position for sinusoid laws */
     /* polygon and segment outlines: local vertices relative to the centroid at angle 0 */
     int32_t *vert_offset, *vert_count;

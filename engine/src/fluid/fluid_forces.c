@@ -151,7 +151,7 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
     double th[BP_CAP];
     int nt = 0;
     th[nt++] = 0;
-    th[nt++] = 2 * M_PI;
+    th[nt++] = 2 * PL_FL_PI;
     int overflow = 0;
     for (int j = j0; j <= j1 && !overflow; j++)
         for (int i = i0; i <= i1 && !overflow; i++) {
@@ -171,7 +171,7 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
                         double t = (-B + sgn * sq) / A;
                         if (t < 0 || t > 1) continue;
                         double ang = atan2(ac.y + t * d.y, ac.x + t * d.x);
-                        th[nt++] = ang < 0 ? ang + 2 * M_PI : ang;
+                        th[nt++] = ang < 0 ? ang + 2 * PL_FL_PI : ang;
                     }
                 }
                 double al, be, ga; /* zero-pressure crossings inside this element's field */
@@ -180,7 +180,7 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
                 if (R > 0 && fabs(al) <= R) {
                     double phi = atan2(ga, be), w = acos(-al / R);
                     for (int sgn = -1; sgn <= 1; sgn += 2) {
-                        double ang = fmod(phi + sgn * w + 4 * M_PI, 2 * M_PI);
+                        double ang = fmod(phi + sgn * w + 4 * PL_FL_PI, 2 * PL_FL_PI);
                         th[nt++] = ang;
                     }
                 }
@@ -191,7 +191,7 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
            polygonal outline instead (error O((2 pi / 512)^2)) */
         pl_vec2 poly[512];
         for (int k = 0; k < 512; k++)
-            poly[k] = (pl_vec2){c.x + r * cos(2 * M_PI * k / 512), c.y + r * sin(2 * M_PI * k / 512)};
+            poly[k] = (pl_vec2){c.x + r * cos(2 * PL_FL_PI * k / 512), c.y + r * sin(2 * PL_FL_PI * k / 512)};
         double M = 0;
         pl_fl_polygon_force(f, poly, 512, c, force, &M);
         return;

@@ -1,11 +1,63 @@
-/* Placeholder until the fluid module lands: no fluid model can be attached yet, so
- * w->fluid is always NULL and these are never reached with a model. */
+/* The per-step coupling hook (seed 000 §3.3, Fig. 3-1; DESIGN §2 step 2): every
+ * FLUID_SOLVE_TIMESTEPS grain steps the fluid is updated (porosity -> permeability -> assembly ->
+ * solve); every grain step the fluid force and moment of the current field are added to the
+ * dynamic bodies. FLUIDS_ON = 0 returns at once. */
 #include "fluid/fluid_hook.h"
+#include "fluid/fluid_internal.h"
+#include "fluid/fluid_world.h"
+#include <stdlib.h>
 
 pl_status pl__fluid_step(pl_world *w, double dt) {
-    (void)dt;
-    if (w->fluid) return pl__error(w, PL_ERR_NOT_BUILT, "fluid model not built yet");
+    struct pl_fluid *f = w->fluid;
+    if (!f) return PL_OK;
+    if (pl__fluid_flag(w, "FLUIDS_ON", 0) == 0) return PL_OK; /* FLUIDS_ON = 0: no fluid work at all */
+    pl_status st;
+    if (!f->initialised || f->mesh_dirty || f->bc_dirty) {
+        pl__fluid_read_params(w, &f->par);
+        /* FIRST_STEP_STATIC (seed 000 §3.9.3): static field first; otherwise one transient step
+           from the boundary values (eq. 3.18 with phi(0) = phi_bc) */
+        st = pl__fluid_update(w, f->par.first_step_static ? 0 : dt,
+                              f->par.first_step_static || f->par.storage <= 0 || f->par.method == 3);
+        if (st != PL_OK) return st;
+        f->initialised = 1;
+        f->steps_since = 0;
+        f->time_since = 0;
+    } else {
+        f->steps_since++;
+        f->time_since += dt;
+        if (f->steps_since >= f->par.solve_every) {
+            st = pl__fluid_update(w, f->time_since, 0);
+            if (st != PL_OK) return st;
+            f->steps_since = 0;
+            f->time_since = 0;
+        }
+    }
+    /* forces on every dynamic body, every grain step, from the current field */
+    double t0 = pl_fl_now();
+    pl_fl_bodies b = pl__fluid_world_bodies(w);
+    double work = 0;
+    for (int i = 0; i < w->n; i++) {
+        if (w->motion[i] != PL_MOTION_DYNAMIC) continue;
+        if (w->shape[i] != PL_SHAPE_DISC && w->shape[i] != PL_SHAPE_POLYGON) continue;
+        pl_vec2 F = {0, 0};
+        double M = 0;
+        pl_fl_body_force(f, &b, i, &F, &M);
+        w->force[i].x += F.x;
+        w->force[i].y += F.y;
+        w->torque[i] += M;
+        work += (F.x * w->vel[i].x + F.y * w->vel[i].y + M * w->omega[i]) * dt;
+    }
+    w->e_external += work;
+    f->stats.t_forces += pl_fl_now() - t0;
     return PL_OK;
 }
 
-void pl__fluid_free(struct pl_fluid *f) { (void)f; }
+void pl__fluid_free(struct pl_fluid *f) {
+    if (!f) return;
+    pl__fluid_free_state(f);
+    pl_fl_system_free(&f->sys);
+    pl_fl_mesh_free(&f->mesh);
+    free(f->quads); free(f->lines); free(f->cover); free(f->body_cover_start);
+    free(f);
+}
+

@@ -86,7 +86,7 @@ double pl_fl_porosity_3d(double n2d) {
     /* DESIGN §3: maps hexagonal discs (n2 = 0.0931) to FCC spheres (n3 = 0.2595) */
     double s = 1 - n2d;
     if (s < 0) s = 0;
-    return 1 - 2.0 / sqrt(M_PI * sqrt(3.0)) * s * sqrt(s);
+    return 1 - 2.0 / sqrt(PL_FL_PI * sqrt(3.0)) * s * sqrt(s);
 }
 
 static double kc(double e) { return e * e * e / (1 + e); }

@@ -3,6 +3,7 @@
  * (eq. 3.17) by the theta method (backward Euler by default, Crank-Nicolson) and by the thesis's
  * explicit update (§3.9.2, eq. 3.18) with a lumped storage matrix, sub-stepped to stay below its
  * stability limit 2 / lambda_max(M^-1 K) (bounded with Gershgorin circles). */
+#define _POSIX_C_SOURCE 200809L
 #include "fluid/fluid_internal.h"
 #include <math.h>
 #include <stdio.h>

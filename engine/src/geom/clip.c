@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#define PI_CLIP 3.14159265358979323846
+
 static inline pl_vec2 v_sub(pl_vec2 a, pl_vec2 b) { return (pl_vec2){a.x - b.x, a.y - b.y}; }
 static inline pl_vec2 v_add(pl_vec2 a, pl_vec2 b) { return (pl_vec2){a.x + b.x, a.y + b.y}; }
 static inline double v_dot(pl_vec2 a, pl_vec2 b) { return a.x * b.x + a.y * b.y; }
@@ -185,13 +187,14 @@ double pl_clip_disc(pl_vec2 c, double r, const pl_vec2 *p, int np, pl_overlap *o
     double area = 0;
     pl_vec2 mom = {0, 0}, sum = {0, 0};
     const double r2 = r * r;
-    int nc = 0;
+    int nc = 0, inside_pieces = 0, centre_inside = 1;
     pl_vec2 cross[PL_CLIP_MAX_CROSS];
     for (int i = 0; i < np; i++) {
         const pl_vec2 a = v_sub(p[i], c), b = v_sub(p[i + 1 < np ? i + 1 : 0], c);
         const pl_vec2 d = v_sub(b, a);
         const double qa = v_dot(d, d);
         if (qa == 0) continue;
+        if (v_cross(d, (pl_vec2){-a.x, -a.y}) < 0) centre_inside = 0;
         const double qb = v_dot(a, d), qc = v_dot(a, a) - r2;
         const double disc = qb * qb - qa * qc; /* quarter discriminant */
         double t1 = 1, t2 = 0;                 /* inside part [t1, t2] of the edge */
@@ -211,13 +214,20 @@ double pl_clip_disc(pl_vec2 c, double r, const pl_vec2 *p, int np, pl_overlap *o
             if (t1 > 0) sector(a, e1, r, &area, &mom);
             triangle(e1, e2, &area, &mom);
             sum = v_add(sum, v_sub(e2, e1));
+            inside_pieces++;
             if (t2 < 1) sector(e2, b, r, &area, &mom);
         } else {
             sector(a, b, r, &area, &mom);
         }
     }
-    if (!(area > 1e-300)) return 0;
-    /* Clamp round-off: the overlap can exceed neither the disc nor the polygon. */
+    if (inside_pieces == 0) {
+        /* no edge runs inside the circle: the sectors sum to the whole disc when the centre
+         * is inside the polygon and to zero (up to round-off) otherwise; decide exactly */
+        if (!centre_inside) return 0;
+        area = PI_CLIP * r2;
+        mom = (pl_vec2){0, 0};
+    }
+    if (!(area > 0)) return 0;
     out->area = area;
     out->centroid = (pl_vec2){c.x + mom.x / area, c.y + mom.y / area};
     out->chord_vec = sum;

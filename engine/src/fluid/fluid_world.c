@@ -1,0 +1,476 @@
+/* The fluid model seen from the world: public API of porelab/fluid.h (quads, lines, solves,
+ * queries) and the per-step hook (fluid_hook.h) that couples the Darcy field to the grains
+ * (seed 000 §3.3, Fig. 3-1; DESIGN §2 step 2). */
+#include "dem/world_internal.h"
+#include "fluid/fluid_hook.h"
+#include "fluid/fluid_internal.h"
+#include "fluid/fluid_world.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+double pl__fluid_flag(const pl_world *w, const char *name, double def) {
+    double v;
+    if (pl_world_get_flag(w, name, &v) == PL_OK) return v;
+    return def;
+}
+
+pl_fl_params pl_fl_default_params(void) {
+    pl_fl_params p;
+    memset(&p, 0, sizeof p);
+    p.on = 1;
+    p.perm_low = 0.001;
+    p.perm_high = 5.0;
+    p.solve_every = 1;
+    p.density = 1000;
+    p.storage = 1e-4;
+    p.viscosity = 1e-3;
+    p.explicit_safety = 0.9;
+    p.pixels = 16;
+    p.porosity_map = 1;
+    p.kc_c1 = 1e-2;
+    p.drag = 1;
+    p.gravity = (pl_vec2){0, -9.81};
+    p.g = 9.81;
+    p.up = (pl_vec2){0, 1};
+    return p;
+}
+
+void pl__fluid_read_params(pl_world *w, pl_fl_params *p) {
+    *p = pl_fl_default_params();
+    p->on = pl__fluid_flag(w, "FLUIDS_ON", 0) != 0;
+    p->first_step_static = pl__fluid_flag(w, "FIRST_STEP_STATIC", 0) != 0;
+    p->perm_mode = (int)pl__fluid_flag(w, "FLUID_PERM", 0);
+    p->perm_low = pl__fluid_flag(w, "FLUID_PERM_LOW", p->perm_low);
+    p->perm_high = pl__fluid_flag(w, "FLUID_PERM_HIGH", p->perm_high);
+    p->solve_every = (int)pl__fluid_flag(w, "FLUID_SOLVE_TIMESTEPS", 1);
+    if (p->solve_every < 1) p->solve_every = 1;
+    p->density = pl__fluid_flag(w, "FLUID_DENSITY", p->density);
+    p->storage = pl__fluid_flag(w, "FLUID_STORAGE", p->storage);
+    p->viscosity = pl__fluid_flag(w, "FLUID_VISCOSITY", p->viscosity);
+    p->perm_units = (int)pl__fluid_flag(w, "FLUID_PERM_UNITS", 0);
+    p->method = (int)pl__fluid_flag(w, "FLUID_METHOD", 0);
+    p->mass_consistent = (int)pl__fluid_flag(w, "FLUID_MASS", 0);
+    p->explicit_safety = pl__fluid_flag(w, "FLUID_EXPLICIT_SAFETY", p->explicit_safety);
+    p->porosity_method = (int)pl__fluid_flag(w, "FLUID_POROSITY_METHOD", 0);
+    p->pixels = (int)pl__fluid_flag(w, "FLUID_PIXELS", p->pixels);
+    p->porosity_map = (int)pl__fluid_flag(w, "FLUID_POROSITY_MAP", p->porosity_map);
+    p->kc_mode = (int)pl__fluid_flag(w, "FLUID_KC_MODE", 0);
+    p->kc_c1 = pl__fluid_flag(w, "FLUID_KC_C1", p->kc_c1);
+    p->drag = pl__fluid_flag(w, "FLUID_DRAG", 1) != 0;
+    p->geometry_flag = pl__fluid_flag(w, "FLUID_GEOMETRY_FLAG", 0) != 0;
+    p->pressures_flag = pl__fluid_flag(w, "FLUID_PRESSURES_FLAG", 0) != 0;
+    p->gravity = w->def.gravity;
+    double g = hypot(p->gravity.x, p->gravity.y);
+    if (g > 0) {
+        p->g = g;
+        p->up = (pl_vec2){-p->gravity.x / g, -p->gravity.y / g};
+    } else {
+        p->g = 9.80665; /* heads still convert with standard gravity; z = 0 */
+        p->up = (pl_vec2){0, 1};
+    }
+}
+
+pl_fl_bodies pl__fluid_world_bodies(const pl_world *w) {
+    pl_fl_bodies b;
+    b.n = w->n;
+    b.shape = w->shape;
+    b.pos = w->pos;
+    b.radius = w->radius;
+    b.vert_offset = w->vert_offset;
+    b.vert_count = w->vert_count;
+    b.verts = w->verts_world;
+    return b;
+}
+
+static struct pl_fluid *model(pl_world *w) {
+    if (!w->fluid) {
+        struct pl_fluid *f = calloc(1, sizeof *f);
+        if (!f) return NULL;
+        f->mesh_dirty = 1;
+        f->par = pl_fl_default_params();
+        snprintf(f->geometry_file, sizeof f->geometry_file, "geometry.flu");
+        snprintf(f->pressures_file, sizeof f->pressures_file, "pressures.flu");
+        w->fluid = f;
+    }
+    return w->fluid;
+}
+
+void pl__fluid_free_state(struct pl_fluid *f) {
+    free(f->head); free(f->head_prev); free(f->perm); free(f->perm_assembled); free(f->solid);
+    free(f->voidr); free(f->porosity); free(f->grad); free(f->stamp); free(f->perm_user);
+    f->head = f->head_prev = f->perm = f->perm_assembled = f->solid = f->voidr = f->porosity = f->grad = NULL;
+    f->perm_user = NULL;
+    f->stamp = NULL;
+    f->stamp_gen = 0;
+    f->ncover = 0;
+}
+
+/* Meshes and builds the system when the input changed. */
+static pl_status ensure_built(pl_world *w) {
+    struct pl_fluid *f = w->fluid;
+    if (!f) return pl__error(w, PL_ERR_STATE, "fluid: no fluid model (add a fluid quad first)");
+    pl_status st;
+    if (f->mesh_dirty) {
+        pl__fluid_free_state(f);
+        pl_fl_system_free(&f->sys);
+        f->built = 0;
+        st = pl_fl_mesh_build(&f->mesh, f->quads, f->nq, f->msg, sizeof f->msg);
+        if (st != PL_OK) return pl__error(w, st, "%s", f->msg);
+        const int nn = f->mesh.nn, ne = f->mesh.ne;
+        f->head = calloc((size_t)nn, sizeof(double));
+        f->head_prev = calloc((size_t)nn, sizeof(double));
+        f->perm = calloc((size_t)ne, sizeof(double));
+        f->perm_assembled = calloc((size_t)ne, sizeof(double));
+        f->solid = calloc((size_t)ne, sizeof(double));
+        f->voidr = calloc((size_t)ne, sizeof(double));
+        f->porosity = calloc((size_t)ne, sizeof(double));
+        f->grad = calloc(2 * (size_t)ne, sizeof(double));
+        f->stamp = calloc((size_t)ne, sizeof(int32_t));
+        if (!f->head || !f->head_prev || !f->perm || !f->perm_assembled || !f->solid || !f->voidr || !f->porosity ||
+            !f->grad || !f->stamp)
+            return pl__error(w, PL_ERR_NOMEM, "fluid: out of memory for %d nodes", nn);
+        for (int e = 0; e < ne; e++) { f->voidr[e] = 99; f->porosity[e] = 0.99; f->perm_assembled[e] = -1; }
+        /* initial field: pressure head 0 (seed 000 §3.9.2: zero except on the boundary) */
+        for (int i = 0; i < nn; i++) f->head[i] = pl_fl_z(f, f->mesh.xy[i]);
+        f->mesh_dirty = 0;
+        f->bc_dirty = 1;
+        f->initialised = 0;
+        f->geometry_written = 0;
+        f->built = 1;
+    }
+    if (f->bc_dirty) {
+        st = pl_fl_system_build(f);
+        if (st != PL_OK) return pl__error(w, st, "%s", f->msg[0] ? f->msg : "fluid: system build failed");
+        pl_fl_apply_dirichlet(f, f->head);
+        f->static_valid = 0;
+        f->bc_dirty = 0;
+    }
+    return PL_OK;
+}
+
+static pl_status write_outputs(pl_world *w) {
+    struct pl_fluid *f = w->fluid;
+    if (f->par.geometry_flag && !f->geometry_written) {
+        pl_status st = pl_world_fluid_write_geometry(w, f->geometry_file);
+        if (st != PL_OK) return st;
+        f->geometry_written = 1;
+    }
+    if (f->par.pressures_flag) {
+        if (!f->pressures_started) {
+            FILE *fp = fopen(f->pressures_file, "w");
+            if (!fp) return pl__error(w, PL_ERR_IO, "fluid: cannot write %s", f->pressures_file);
+            fprintf(fp, "%% porelab fluid pressures: each row is t (s) then the pressure head (m) of every node\n");
+            fclose(fp);
+            f->pressures_started = 1;
+        }
+        return pl_world_fluid_append_pressures(w, f->pressures_file);
+    }
+    return PL_OK;
+}
+
+/* One fluid update: porosity, permeability, assembly, solve (static when dt <= 0). */
+pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
+    struct pl_fluid *f = w->fluid;
+    pl__fluid_read_params(w, &f->par);
+    /* gravity or density changes move the prescribed total heads */
+    pl_status st = ensure_built(w);
+    if (st != PL_OK) return st;
+    if (f->par.perm_mode == 1 || f->par.drag) {
+        pl_fl_bodies b = pl__fluid_world_bodies(w);
+        st = pl_fl_update_porosity(f, &b);
+        if (st != PL_OK) return pl__error(w, st, "fluid: out of memory in the porosity update");
+    }
+    if (f->par.perm_mode == 2 && !f->perm_user)
+        return pl__error(w, PL_ERR_STATE,
+                         "fluid: FLUID_PERM = 2 needs per-element permeabilities (fluid_set_element_permeability)");
+    pl_fl_update_permeability(f);
+    if (f->k_dirty) {
+        double t0 = pl_fl_now();
+        pl_fl_assemble(f);
+        f->stats.t_assembly += pl_fl_now() - t0;
+    }
+    st = is_static ? pl_fl_solve_static(f) : pl_fl_advance(f, dt);
+    if (st != PL_OK) return pl__error(w, st, "%s", f->msg);
+    pl_fl_update_gradients(f);
+    f->stats.updates++;
+    return write_outputs(w);
+}
+
+/* ------------------------------------------------------------------ API */
+
+pl_fluid_quad_def pl_default_fluid_quad_def(void) {
+    pl_fluid_quad_def d;
+    memset(&d, 0, sizeof d);
+    d.corners[0] = (pl_vec2){0, 0};
+    d.corners[1] = (pl_vec2){1, 0};
+    d.corners[2] = (pl_vec2){1, 1};
+    d.corners[3] = (pl_vec2){0, 1};
+    d.ndivx = 4;
+    d.ndivy = 4;
+    d.id = -1;
+    d.anisotropy = 1;
+    return d;
+}
+
+int pl_world_add_fluid_quad(pl_world *w, const pl_fluid_quad_def *def) {
+    if (!def) return pl__error(w, PL_ERR_ARG, "add_fluid_quad: no definition given");
+    struct pl_fluid *f = model(w);
+    if (!f) return pl__error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
+    pl_fl_quad q;
+    for (int k = 0; k < 4; k++) q.c[k] = def->corners[k];
+    q.ndivx = def->ndivx;
+    q.ndivy = def->ndivy;
+    q.id = def->id >= 0 ? def->id : f->nq;
+    q.anisotropy = def->anisotropy;
+    for (int k = 0; k < f->nq; k++)
+        if (f->quads[k].id == q.id)
+            return pl__error(w, PL_ERR_ARG, "add_fluid_quad: id %d is already used by fluid quad %d", q.id, k);
+    /* validate this quad alone now so that the error names the call */
+    pl_fl_mesh tmp = {0};
+    char msg[PL_FL_MSG];
+    pl_fl_quad one = q;
+    if (q.ndivx >= 1 && q.ndivy >= 1 && q.ndivx <= 4096 && q.ndivy <= 4096) { one.ndivx = 1; one.ndivy = 1; }
+    pl_status st = pl_fl_mesh_build(&tmp, &one, 1, msg, sizeof msg);
+    pl_fl_mesh_free(&tmp);
+    if (st != PL_OK) {
+        /* report with the real index and divisions */
+        if (q.ndivx < 1 || q.ndivy < 1 || q.ndivx > 4096 || q.ndivy > 4096)
+            return pl__error(w, PL_ERR_ARG, "add_fluid_quad (id %d): ndivx and ndivy must be 1..4096 (got %d, %d)",
+                             q.id, q.ndivx, q.ndivy);
+        return pl__error(w, st, "add_fluid_quad: %s", msg);
+    }
+    if (f->nq == f->qcap) {
+        int nc = f->qcap ? 2 * f->qcap : 8;
+        pl_fl_quad *p = realloc(f->quads, sizeof(pl_fl_quad) * (size_t)nc);
+        if (!p) return pl__error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
+        f->quads = p;
+        f->qcap = nc;
+    }
+    f->quads[f->nq] = q;
+    f->mesh_dirty = 1;
+    return f->nq++;
+}
+
+pl_status pl_world_change_fluid_id(pl_world *w, int old_id, int new_id) {
+    struct pl_fluid *f = w->fluid;
+    int at = -1;
+    for (int k = 0; f && k < f->nq; k++) {
+        if (f->quads[k].id == new_id && new_id != old_id)
+            return pl__error(w, PL_ERR_ARG, "change_fluid_id: id %d is already used", new_id);
+        if (f->quads[k].id == old_id) at = k;
+    }
+    if (at < 0) return pl__error(w, PL_ERR_ARG, "change_fluid_id: no fluid quad has id %d", old_id);
+    f->quads[at].id = new_id;
+    return PL_OK;
+}
+
+int pl_world_fluid_quad_count(const pl_world *w) { return w->fluid ? w->fluid->nq : 0; }
+
+static int add_line(pl_world *w, pl_vec2 a, pl_vec2 b, double value, int kind, const char *fn) {
+    if (!isfinite(a.x) || !isfinite(a.y) || !isfinite(b.x) || !isfinite(b.y) || !isfinite(value))
+        return pl__error(w, PL_ERR_ARG, "%s: coordinates and value must be finite", fn);
+    struct pl_fluid *f = model(w);
+    if (!f) return pl__error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
+    if (f->nl == f->lcap) {
+        int nc = f->lcap ? 2 * f->lcap : 8;
+        pl_fl_line *p = realloc(f->lines, sizeof(pl_fl_line) * (size_t)nc);
+        if (!p) return pl__error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
+        f->lines = p;
+        f->lcap = nc;
+    }
+    f->lines[f->nl] = (pl_fl_line){a, b, value, kind};
+    f->bc_dirty = 1;
+    return f->nl++;
+}
+
+int pl_world_add_fluid_bc(pl_world *w, pl_vec2 a, pl_vec2 b, double pressure_head) {
+    return add_line(w, a, b, pressure_head, PL_FL_LINE_HEAD, "add_fluid_bc");
+}
+
+int pl_world_add_fluid_flux(pl_world *w, pl_vec2 a, pl_vec2 b, double inflow) {
+    return add_line(w, a, b, inflow, PL_FL_LINE_FLUX, "add_fluid_flux");
+}
+
+pl_status pl_world_clear_fluid_bcs(pl_world *w) {
+    if (!w->fluid) return PL_OK;
+    w->fluid->nl = 0;
+    w->fluid->bc_dirty = 1;
+    return PL_OK;
+}
+
+pl_status pl_world_fluid_solve_static(pl_world *w) {
+    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_solve_static: no fluid model (add a fluid quad first)");
+    pl_status st = pl__fluid_update(w, 0, 1);
+    if (st == PL_OK) {
+        w->fluid->initialised = 1;
+        w->fluid->steps_since = 0;
+        w->fluid->time_since = 0;
+    }
+    return st;
+}
+
+pl_status pl_world_fluid_advance(pl_world *w, double dt) {
+    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_advance: no fluid model (add a fluid quad first)");
+    if (!(dt > 0) || !isfinite(dt)) return pl__error(w, PL_ERR_ARG, "fluid_advance: dt must be > 0 (got %g)", dt);
+    pl_status st = pl__fluid_update(w, dt, 0);
+    if (st == PL_OK) w->fluid->initialised = 1;
+    return st;
+}
+
+pl_status pl_world_fluid_set_pressure_head(pl_world *w, double psi) {
+    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_set_pressure_head: no fluid model");
+    pl__fluid_read_params(w, &w->fluid->par);
+    pl_status st = ensure_built(w);
+    if (st != PL_OK) return st;
+    struct pl_fluid *f = w->fluid;
+    for (int i = 0; i < f->mesh.nn; i++) f->head[i] = psi + pl_fl_z(f, f->mesh.xy[i]);
+    pl_fl_apply_dirichlet(f, f->head);
+    pl_fl_update_gradients(f);
+    f->static_valid = 0;
+    f->initialised = 1;
+    return PL_OK;
+}
+
+pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, int count) {
+    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_set_element_permeability: no fluid model");
+    pl__fluid_read_params(w, &w->fluid->par);
+    pl_status st = ensure_built(w);
+    if (st != PL_OK) return st;
+    struct pl_fluid *f = w->fluid;
+    if (count != f->mesh.ne)
+        return pl__error(w, PL_ERR_ARG, "fluid_set_element_permeability: %d values given for %d triangles", count,
+                         f->mesh.ne);
+    for (int e = 0; e < count; e++)
+        if (!(k[e] > 0) || !isfinite(k[e]))
+            return pl__error(w, PL_ERR_ARG, "fluid_set_element_permeability: value %d is %g; must be > 0", e, k[e]);
+    if (!f->perm_user) f->perm_user = malloc(sizeof(double) * (size_t)count);
+    if (!f->perm_user) return pl__error(w, PL_ERR_NOMEM, "fluid_set_element_permeability: out of memory");
+    memcpy(f->perm_user, k, sizeof(double) * (size_t)count);
+    return PL_OK;
+}
+
+/* ---------------------------------------------------------------- queries */
+
+static struct pl_fluid *built(pl_world *w) {
+    if (!w->fluid) return NULL;
+    if (w->fluid->mesh_dirty || w->fluid->bc_dirty) {
+        pl__fluid_read_params(w, &w->fluid->par);
+        if (ensure_built(w) != PL_OK) return NULL;
+    }
+    return w->fluid;
+}
+
+int pl_world_fluid_node_count(pl_world *w) {
+    struct pl_fluid *f = built(w);
+    return f ? f->mesh.nn : 0;
+}
+
+int pl_world_fluid_triangle_count(pl_world *w) {
+    struct pl_fluid *f = built(w);
+    return f ? f->mesh.ne : 0;
+}
+
+int pl_world_fluid_copy_nodes(pl_world *w, pl_vec2 *out, int cap) {
+    struct pl_fluid *f = built(w);
+    if (!f) return 0;
+    int n = f->mesh.nn < cap ? f->mesh.nn : cap;
+    memcpy(out, f->mesh.xy, sizeof(pl_vec2) * (size_t)(n > 0 ? n : 0));
+    return n;
+}
+
+int pl_world_fluid_copy_triangles(pl_world *w, int *out, int cap) {
+    struct pl_fluid *f = built(w);
+    if (!f) return 0;
+    int n = f->mesh.ne < cap ? f->mesh.ne : cap;
+    for (int k = 0; k < 3 * n; k++) out[k] = f->mesh.tri[k];
+    return n;
+}
+
+static double head_ref(const struct pl_fluid *f) {
+    double s = 0;
+    int n = 0;
+    for (int i = 0; i < f->mesh.nn; i++)
+        if (f->sys.is_dir && f->sys.is_dir[i]) { s += f->head[i]; n++; }
+    if (n == 0)
+        for (int i = 0; i < f->mesh.nn; i++) { s += f->head[i]; n++; }
+    return n ? s / n : 0;
+}
+
+int pl_world_fluid_copy_node_field(pl_world *w, pl_fluid_node_field field, double *out, int cap) {
+    struct pl_fluid *f = built(w);
+    if (!f) return 0;
+    int n = f->mesh.nn < cap ? f->mesh.nn : cap;
+    double rg = f->par.density * f->par.g, href = head_ref(f);
+    for (int i = 0; i < n; i++) {
+        double z = pl_fl_z(f, f->mesh.xy[i]);
+        switch (field) {
+        case PL_FLUID_HEAD: out[i] = f->head[i]; break;
+        case PL_FLUID_PRESSURE_HEAD: out[i] = f->head[i] - z; break;
+        case PL_FLUID_PRESSURE: out[i] = rg * (f->head[i] - z); break;
+        case PL_FLUID_EXCESS_PRESSURE: out[i] = rg * (f->head[i] - href); break;
+        default: return 0;
+        }
+    }
+    return n;
+}
+
+int pl_world_fluid_copy_element_field(pl_world *w, pl_fluid_element_field field, double *out, int cap) {
+    struct pl_fluid *f = built(w);
+    if (!f) return 0;
+    int n = f->mesh.ne < cap ? f->mesh.ne : cap;
+    for (int e = 0; e < n; e++) {
+        double kx = f->perm[e], ky = f->perm[e] * f->quads[f->mesh.tri_quad[e]].anisotropy;
+        switch (field) {
+        case PL_FLUID_VELOCITY_X: out[e] = -kx * f->grad[2 * e]; break;
+        case PL_FLUID_VELOCITY_Y: out[e] = -ky * f->grad[2 * e + 1]; break;
+        case PL_FLUID_POROSITY: out[e] = f->porosity[e]; break;
+        case PL_FLUID_VOID_RATIO: out[e] = f->voidr[e]; break;
+        case PL_FLUID_PERM_X: out[e] = kx; break;
+        case PL_FLUID_PERM_Y: out[e] = ky; break;
+        case PL_FLUID_SOLID_AREA: out[e] = f->solid[e]; break;
+        default: return 0;
+        }
+    }
+    return n;
+}
+
+int pl_world_fluid_pressure_at(pl_world *w, pl_vec2 p, double *pressure, double *head) {
+    struct pl_fluid *f = built(w);
+    if (!f) {
+        if (pressure) *pressure = 0;
+        if (head) *head = NAN;
+        return 0;
+    }
+    return pl_fl_pressure_at(f, p, pressure, head) >= 0;
+}
+
+double pl_world_fluid_line_inflow(pl_world *w, int line) {
+    struct pl_fluid *f = built(w);
+    if (!f || line < 0 || line >= f->nl) return NAN;
+    return pl_fl_line_inflow(f, line);
+}
+
+pl_status pl_world_fluid_body_force(pl_world *w, int body, pl_vec2 *force, double *moment) {
+    struct pl_fluid *f = built(w);
+    if (!f) return pl__error(w, PL_ERR_STATE, "fluid_body_force: no fluid model");
+    if (body < 0 || body >= w->n)
+        return pl__error(w, PL_ERR_ARG, "fluid_body_force: body %d does not exist (0..%d)", body, w->n - 1);
+    pl_fl_bodies b = pl__fluid_world_bodies(w);
+    pl_vec2 F = {0, 0};
+    double M = 0;
+    pl_fl_body_force(f, &b, body, &F, &M);
+    if (force) *force = F;
+    if (moment) *moment = M;
+    return PL_OK;
+}
+
+pl_status pl_world_fluid_stats(const pl_world *w, pl_fluid_stats *out) {
+    if (!w->fluid) {
+        memset(out, 0, sizeof *out);
+        return PL_ERR_STATE;
+    }
+    *out = w->fluid->stats;
+    return PL_OK;
+}

@@ -1,0 +1,13 @@
+/* Helpers shared by fluid_world.c (API) and fluid_hook.c (stepping). */
+#ifndef PL_FLUID_WORLD_H
+#define PL_FLUID_WORLD_H
+#include "dem/world_internal.h"
+#include "fluid/fluid_internal.h"
+
+double pl__fluid_flag(const pl_world *w, const char *name, double def);
+void pl__fluid_read_params(pl_world *w, pl_fl_params *p);
+pl_fl_bodies pl__fluid_world_bodies(const pl_world *w);
+/* One fluid update: porosity, permeability, assembly, solve (static when is_static). */
+pl_status pl__fluid_update(pl_world *w, double dt, int is_static);
+void pl__fluid_free_state(struct pl_fluid *f);
+#endif

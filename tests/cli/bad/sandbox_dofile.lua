@@ -1,0 +1,2 @@
+-- sandbox: dofile outside the scene's folder is refused
+dofile("/etc/hostname")

@@ -1,0 +1,2 @@
+-- sandbox: shell commands are refused
+os.execute("echo should-not-run")

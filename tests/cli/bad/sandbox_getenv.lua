@@ -1,0 +1,2 @@
+-- sandbox: os.getenv is refused unless --trust
+print("HOME is " .. tostring(os.getenv("HOME")))

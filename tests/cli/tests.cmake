@@ -1,0 +1,149 @@
+# CLI and Lua scene tests (label "cli"). Each runs the porelab program through
+# tests/cli/check.cmake, which checks the exact exit code (a crash never passes) and the
+# message: file:line, the argument and the valid range.
+set(PL_CLI_DIR ${CMAKE_CURRENT_LIST_DIR})
+set(PL_CLI_OUT ${CMAKE_CURRENT_BINARY_DIR}/cli-out)
+set(PL_BAD tests/cli/bad)
+
+# pl_cli_test(name RC code ARGS arg... [MATCH re] [MATCH2 re] [NOMATCH re]
+#             [EXPECT_FILE path [FILE_MATCH re]] [NO_FILE path])
+# Runs from the source folder, so scene paths in messages read tests/cli/bad/x.lua.
+function(pl_cli_test name)
+  cmake_parse_arguments(T "" "RC;MATCH;MATCH2;NOMATCH;EXPECT_FILE;FILE_MATCH;NO_FILE" "ARGS"
+                        ${ARGN})
+  string(REPLACE ";" "|" args "${T_ARGS}")
+  set(defs -DEXE=$<TARGET_FILE:porelab> "-DARGS=${args}" -DEXPECT_RC=${T_RC}
+           -DWORKDIR=${CMAKE_SOURCE_DIR})
+  foreach(k MATCH MATCH2 NOMATCH EXPECT_FILE FILE_MATCH NO_FILE)
+    if(DEFINED T_${k})
+      list(APPEND defs "-D${k}=${T_${k}}")
+    endif()
+  endforeach()
+  add_test(NAME cli_${name} COMMAND ${CMAKE_COMMAND} ${defs} -P ${PL_CLI_DIR}/check.cmake)
+  set_tests_properties(cli_${name} PROPERTIES LABELS cli TIMEOUT 120)
+endfunction()
+
+# Every scene in scenes/ runs a short while without error (imperative scripts run whole).
+file(GLOB_RECURSE pl_scenes RELATIVE ${CMAKE_SOURCE_DIR} CONFIGURE_DEPENDS
+     ${CMAKE_SOURCE_DIR}/scenes/*.lua)
+foreach(scene IN LISTS pl_scenes)
+  string(REGEX REPLACE "^scenes/(.*)\\.lua$" "\\1" sname "${scene}")
+  string(REPLACE "/" "_" sname "${sname}")
+  pl_cli_test(scene_${sname} RC 0
+    ARGS run ${scene} --steps 200 --quiet --out ${PL_CLI_OUT}/scene_${sname})
+endforeach()
+
+# Bad input: one clear message with file:line, the argument and the valid range; exit 1.
+pl_cli_test(bad_negative_radius RC 1 ARGS run ${PL_BAD}/neg_radius.lua --quiet
+  MATCH "^porelab: tests/cli/bad/neg_radius.lua:4: disc: radius must be > 0 \\(got -1\\)\n$")
+pl_cli_test(bad_unknown_material RC 1 ARGS run ${PL_BAD}/unknown_material.lua --quiet
+  MATCH "unknown_material.lua:4: disc: unknown material 'snad' \\(known: sand\\)")
+pl_cli_test(bad_wrong_type RC 1 ARGS run ${PL_BAD}/wrong_type.lua --quiet
+  MATCH "wrong_type.lua:4: disc: radius must be a number \\(got string\\)")
+pl_cli_test(bad_typo_field RC 1 ARGS run ${PL_BAD}/typo_field.lua --quiet
+  MATCH "typo_field.lua:4: disc: unknown field 'radious' \\(valid: .*radius")
+pl_cli_test(bad_syntax_error RC 1 ARGS run ${PL_BAD}/syntax_error.lua --quiet
+  MATCH "syntax_error.lua:3: '}' expected near 'density'")
+pl_cli_test(bad_missing_file RC 1 ARGS run ${PL_BAD}/no_such_scene.lua --quiet
+  MATCH "cannot open scene 'tests/cli/bad/no_such_scene.lua': No such file")
+pl_cli_test(bad_engine_error RC 1 ARGS run ${PL_BAD}/engine_error.lua --quiet
+  MATCH "engine_error.lua:4: polygon: .*counter-clockwise")
+pl_cli_test(bad_return_value RC 1 ARGS run ${PL_BAD}/bad_return.lua --quiet
+  MATCH "bad_return.lua: the scene must return nothing .*\\(got number\\)")
+pl_cli_test(bad_render_layer RC 1 ARGS run ${PL_BAD}/bad_render.lua --quiet
+  MATCH "bad_render.lua: render: layers: unknown layer 'force'")
+pl_cli_test(bad_hook_error RC 1
+  ARGS run ${PL_BAD}/hook_error.lua --quiet --out ${PL_CLI_OUT}/hook_error
+  MATCH "hook_error.lua:10: hook failed at frame 2"
+  MATCH2 "run stopped at t = 0.* \\(step 20 of 100\\).*3 frames kept in"
+  EXPECT_FILE ${PL_CLI_OUT}/hook_error/frame_000002.png)
+
+# Flags: unknown names list the valid flags; recognised but unbuilt features are refused.
+pl_cli_test(flag_unknown RC 1 ARGS run ${PL_BAD}/unknown_flag.lua --quiet
+  MATCH "unknown_flag.lua:3: set_flag: unknown flag 'TIMESTEP'.*valid flags: TIMESTEPS, PRINT_INT")
+pl_cli_test(flag_not_built RC 1 ARGS run ${PL_BAD}/not_built_flag.lua --quiet
+  MATCH "not_built_flag.lua:2: world: flag EXODUSFLAG is recognised but its feature is not built")
+pl_cli_test(flags_table RC 0 ARGS flags --markdown
+  MATCH "\\| `TIMESTEPS` \\| steps \\|" MATCH2 "\\| `EXODUSFLAG` .*\\| not yet \\|")
+
+# Sandbox: refused by default with the function's name; --trust lifts it.
+pl_cli_test(sandbox_execute RC 1 ARGS run ${PL_BAD}/sandbox_execute.lua --quiet
+  MATCH "sandbox_execute.lua:2: os.execute is not allowed in a sandboxed scene"
+  NOMATCH "should-not-run")
+pl_cli_test(sandbox_getenv RC 1 ARGS run ${PL_BAD}/sandbox_getenv.lua --quiet
+  MATCH "sandbox_getenv.lua:2: os.getenv is not allowed.*--trust")
+pl_cli_test(sandbox_trust RC 0 ARGS run ${PL_BAD}/sandbox_getenv.lua --quiet --trust
+  MATCH "HOME is ")
+pl_cli_test(sandbox_write RC 1
+  ARGS run ${PL_BAD}/sandbox_write.lua --quiet --out ${PL_CLI_OUT}/sandbox
+  MATCH "sandbox_write.lua:2: io.open: writing '/tmp/porelab-sandbox-escape.txt' is not allowed"
+  NO_FILE /tmp/porelab-sandbox-escape.txt)
+pl_cli_test(sandbox_read RC 1 ARGS run ${PL_BAD}/sandbox_read.lua --quiet
+  MATCH "sandbox_read.lua:2: io.open: reading '../../../CMakeLists.txt' is not allowed")
+pl_cli_test(sandbox_dofile RC 1 ARGS run ${PL_BAD}/sandbox_dofile.lua --quiet
+  MATCH "sandbox_dofile.lua:2: dofile: reading '/etc/hostname' is not allowed")
+pl_cli_test(sandbox_binary_chunk RC 1 ARGS run ${PL_BAD}/sandbox_load_binary.lua --quiet
+  MATCH "sandbox_load_binary.lua:2: load: binary chunks are not allowed")
+pl_cli_test(sandbox_loadlib RC 1 ARGS run ${PL_BAD}/sandbox_require_c.lua --quiet
+  MATCH "sandbox_require_c.lua:2: package.loadlib is not allowed")
+pl_cli_test(sandbox_csv_outside RC 1
+  ARGS run ${PL_BAD}/csv_outside.lua --quiet --out ${PL_CLI_OUT}/csv_outside
+  MATCH "csv_outside.lua:2: csv: writing '../escape.csv' is not allowed")
+
+# Imperative scripts: a failing assert exits non-zero; a passing one writes its CSV.
+pl_cli_test(imperative_assert_fails RC 1 ARGS run ${PL_BAD}/failing_assert.lua --quiet
+  MATCH "failing_assert.lua:7: the disc fell")
+pl_cli_test(imperative_csv RC 0
+  ARGS run scenes/examples/imperative.lua --out ${PL_CLI_OUT}/imperative
+  MATCH "ran to completion"
+  EXPECT_FILE ${PL_CLI_OUT}/imperative/bounce.csv FILE_MATCH "^t,y,vy,contacts\n[0-9]")
+
+# Determinism: same scene twice, same state hash (and a different one a step later).
+add_test(NAME cli_determinism COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
+  -DSCENE=${CMAKE_SOURCE_DIR}/scenes/demo.lua -DOUT=${PL_CLI_OUT}/determinism -DSTEPS=300
+  -P ${PL_CLI_DIR}/determinism.cmake)
+set_tests_properties(cli_determinism PROPERTIES LABELS cli TIMEOUT 120)
+
+# Declarative runs: frames as planned, hooks writing CSV, the summary, the hash line.
+pl_cli_test(run_frames_every RC 0
+  ARGS run scenes/five_discs.lua --steps 30 --every 10 --size 160x120
+       --out ${PL_CLI_OUT}/frames
+  MATCH "frames +4 in .*frames/" MATCH2 "steps +30 of dt = 0.001 s"
+  EXPECT_FILE ${PL_CLI_OUT}/frames/frame_000003.png NO_FILE ${PL_CLI_OUT}/frames/frame_000004.png)
+pl_cli_test(run_flags_defaults RC 0 ARGS info scenes/five_discs.lua
+  MATCH "run +5000 steps to t = 5 s \\(from flag TIMESTEPS\\)"
+  MATCH2 "frames +51, one every 100 steps \\(from flag PRINT_INT\\)")
+pl_cli_test(run_hook_csv RC 0
+  ARGS run scenes/disc_on_plate.lua --until 0.5 --quiet --out ${PL_CLI_OUT}/plate
+  EXPECT_FILE ${PL_CLI_OUT}/plate/contact_force.csv FILE_MATCH "^t,fn\n0,0\n0.05,")
+pl_cli_test(run_hash RC 0 ARGS run scenes/two_disc_impact.lua --steps 10 --quiet --hash
+  --out ${PL_CLI_OUT}/hash
+  MATCH "\nstate-hash: [0-9a-f]+\n$")
+pl_cli_test(run_bad_number RC 2 ARGS run scenes/demo.lua --steps ten
+  MATCH "porelab run: --steps must be an integer >= 0 \\(got 'ten'\\)")
+
+# porelab info and still.
+pl_cli_test(info RC 0 ARGS info scenes/demo.lua
+  MATCH "time step +dt = .* s \\(automatic: 0.2 x the critical step\\)"
+  MATCH2 "critical step +[0-9.e-]+ s = 2 sqrt\\(m/k\\), limited by body #[0-9]+")
+foreach(ext png svg pdf)
+  pl_cli_test(still_${ext} RC 0
+    ARGS still scenes/two_disc_impact.lua --at 0.05 -o ${PL_CLI_OUT}/still.${ext}
+         --out ${PL_CLI_OUT}/still
+    MATCH "wrote .*still.${ext} \\(t = 0.05"
+    EXPECT_FILE ${PL_CLI_OUT}/still.${ext})
+endforeach()
+pl_cli_test(still_bad_extension RC 2
+  ARGS still scenes/demo.lua -o ${PL_CLI_OUT}/still.jpg
+  MATCH "must end in .png, .svg or .pdf")
+
+# Help on every command; unknown options and commands list the valid ones.
+foreach(cmd run still info flags)
+  pl_cli_test(help_${cmd} RC 0 ARGS ${cmd} --help MATCH "^usage: porelab ${cmd} ")
+endforeach()
+pl_cli_test(help RC 0 ARGS --help MATCH "commands:.*run.*still.*info.*flags")
+pl_cli_test(version RC 0 ARGS --version MATCH "^porelab [0-9]+\\.[0-9]+\\.[0-9]+\n$")
+pl_cli_test(unknown_option RC 2 ARGS run scenes/demo.lua --fast
+  MATCH "porelab run: unknown option '--fast'; valid options: --out --until --steps")
+pl_cli_test(unknown_command RC 2 ARGS simulate scenes/demo.lua
+  MATCH "unknown command 'simulate'; valid commands: run still info flags")

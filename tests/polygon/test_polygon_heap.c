@@ -1,0 +1,139 @@
+/* Angle of repose: polygons against discs (seed 004 §2.1 and Fig. 1: "round particles ...
+ * cannot form heaps without unphysical twists", polygons "form stable heaps"; issue 3: "a heap
+ * of polygons reaches a clearly larger angle of repose than a heap of discs with the same
+ * friction (report both angles)").
+ *
+ * The same column of 150 grains (10 x 15 on a 1.6 cm grid) collapses on a floor, once as
+ * random convex polygons inscribed in ellipses (5-9 corners, half axes 5-7.5 mm, aspect
+ * 0.6-1, seed 004 §2.1) and once as discs of the same areas; same density, stiffness,
+ * restitution and friction mu = 0.5 (grain-grain and grain-floor). After the grains come to
+ * rest the surface profile (highest outline point per 6 mm bin) is fitted by a straight line
+ * on each flank between 20 % and 80 % of the heap height; the angle is the mean of the two.
+ * Pass: polygon angle > disc angle + 8 degrees, and the polygon angle lies in the range
+ * reported for 2D polygon heaps with mu ~ 0.5 (roughly 20-35 degrees; e.g. Matuttis & Chen,
+ * Understanding the Discrete Element Method, 2014, ch. 7). */
+#include "harness.h"
+#include "polygon_common.h"
+#include <stdlib.h>
+
+#define NB 150
+#define BIN 0.006
+
+typedef struct heap_result {
+    double angle_left, angle_right, angle, height, ke, time;
+    int on_floor_region;
+} heap_result;
+
+static double fit_slope(const double *x, const double *y, int n) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (int i = 0; i < n; i++) { sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i]; }
+    const double den = n * sxx - sx * sx;
+    return den != 0 ? (n * sxy - sx * sy) / den : 0;
+}
+
+/* Surface profile and flank fits. */
+static void measure(pl_world *w, int first, heap_result *r) {
+    enum { NBIN = 2 * 67 };
+    const double x0 = -0.4;
+    double h[NBIN * 3];
+    const int nbin = (int)(0.8 / BIN);
+    for (int k = 0; k < nbin; k++) h[k] = 0;
+    for (int i = first; i < pl_world_body_count(w); i++) {
+        const pl_body_info b = poly_body(w, i);
+        pl_vec2 v[64];
+        int n = pl_world_body_vertices(w, i, v, 64);
+        if (b.shape == PL_SHAPE_DISC) {
+            n = 32;
+            for (int k = 0; k < n; k++)
+                v[k] = (pl_vec2){b.position.x + b.radius * cos(2 * PI * k / n),
+                                 b.position.y + b.radius * sin(2 * PI * k / n)};
+        }
+        for (int k = 0; k < n; k++) {
+            const int bi = (int)floor((v[k].x - x0) / BIN);
+            if (bi >= 0 && bi < nbin && v[k].y > h[bi]) h[bi] = v[k].y;
+        }
+    }
+    int peak = 0;
+    for (int k = 1; k < nbin; k++)
+        if (h[k] > h[peak]) peak = k;
+    const double H = h[peak];
+    r->height = H;
+    double xs[NBIN * 3], ys[NBIN * 3];
+    int n = 0;
+    for (int k = peak; k >= 0; k--) { /* left flank: walk down from the peak */
+        if (h[k] < 0.2 * H) break;
+        if (h[k] <= 0.8 * H) { xs[n] = x0 + (k + 0.5) * BIN; ys[n] = h[k]; n++; }
+    }
+    r->angle_left = n >= 2 ? atan(fabs(fit_slope(xs, ys, n))) * 180 / PI : 0;
+    n = 0;
+    for (int k = peak; k < nbin; k++) {
+        if (h[k] < 0.2 * H) break;
+        if (h[k] <= 0.8 * H) { xs[n] = x0 + (k + 0.5) * BIN; ys[n] = h[k]; n++; }
+    }
+    r->angle_right = n >= 2 ? atan(fabs(fit_slope(xs, ys, n))) * 180 / PI : 0;
+    r->angle = 0.5 * (r->angle_left + r->angle_right);
+}
+
+static int run_heap(int polygons, heap_result *r) {
+    pl_world_def d = pl_default_world_def();
+    d.gravity = (pl_vec2){0, -9.81};
+    pl_world *w = pl_world_create(&d);
+    const int m = poly_material(w, "grain", 2650, 1e5, 0.5, 0.3);
+    poly_add_wall(w, m, -0.4, 0, 0.4, 0);
+    poly_add_wall(w, m, -0.4, 0.3, -0.4, 0);
+    poly_add_wall(w, m, 0.4, 0, 0.4, 0.3);
+    const int first = pl_world_body_count(w);
+    pl_rng rng;
+    pl_rng_seed(&rng, 2020);
+    const pl_random_polygon_def pd = pl_default_random_polygon_def();
+    for (int k = 0; k < NB; k++) {
+        const pl_vec2 c = {-0.072 + 0.016 * (k % 10) + pl_rng_range(&rng, -1e-3, 1e-3),
+                           0.010 + 0.016 * (k / 10)};
+        pl_vec2 v[64];
+        const int n = pl_shape_random_polygon(&pd, &rng, c, v, 64, NULL, 0);
+        if (n < 3) return 0;
+        int id;
+        if (polygons) {
+            id = poly_add(w, m, v, n, PL_MOTION_DYNAMIC);
+        } else {
+            /* disc of the same area at the polygon's centroid */
+            pl_mass_props mp;
+            pl_polygon_mass_properties(v, n, 2650, &mp, NULL, 0);
+            id = poly_add_disc(w, m, mp.centroid.x, mp.centroid.y, sqrt(mp.area / PI));
+        }
+        if (id < 0) return 0;
+    }
+    const double dt = pl_world_dt(w);
+    int ok = 1;
+    const int chunk = (int)(0.05 / dt);
+    for (int s = 0; s < 80; s++) { /* at most 4 s */
+        if (!poly_run(w, chunk)) { ok = 0; break; }
+        const pl_energy e = pl_world_energy(w);
+        r->ke = e.kinetic;
+        if (s >= 20 && e.kinetic < 1e-6) break;
+    }
+    r->time = pl_world_time(w);
+    measure(w, first, r);
+    pl_world_destroy(&w);
+    return ok;
+}
+
+static int polygons_heap_steeper_than_discs(void) {
+    heap_result p, c;
+    ENSURE(run_heap(1, &p));
+    ENSURE(run_heap(0, &c));
+    fprintf(stderr,
+            "  polygons: angle %.1f deg (left %.1f, right %.1f), height %.3f m, KE %.2g J at t = %.2f s\n"
+            "  discs:    angle %.1f deg (left %.1f, right %.1f), height %.3f m, KE %.2g J at t = %.2f s\n",
+            p.angle, p.angle_left, p.angle_right, p.height, p.ke, p.time, c.angle, c.angle_left,
+            c.angle_right, c.height, c.ke, c.time);
+    ENSURE(p.angle > c.angle + 8);
+    ENSURE(p.angle > 15 && p.angle < 40);
+    ENSURE(p.height > 1.5 * c.height);
+    return 0;
+}
+
+int main(void) {
+    RUN(polygons_heap_steeper_than_discs);
+    return pl_test_report();
+}
