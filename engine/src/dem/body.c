@@ -145,8 +145,8 @@ int pl_world_add_body(pl_world *w, const pl_body_def *d) {
     w->angle[i] = 0;
     w->vel[i] = d->motion == PL_MOTION_FIXED ? (pl_vec2){0, 0} : d->velocity;
     w->omega[i] = d->motion == PL_MOTION_FIXED ? 0 : d->omega;
-    w->force[i] = (pl_vec2){0, 0};
-    w->torque[i] = 0;
+    w->force[i] = w->fdamp[i] = w->fshear[i] = (pl_vec2){0, 0};
+    w->torque[i] = w->tdamp[i] = w->tshear[i] = 0;
     w->radius[i] = radius;
     w->load[i] = (pl_vec2){0, 0};
     w->load_moment[i] = 0;
@@ -296,6 +296,7 @@ pl_status pl_world_set_body_load(pl_world *w, int i, pl_vec2 f, double m) {
     if (!finite2(f) || !isfinite(m)) return pl__error(w, PL_ERR_ARG, "set_load: values must be finite");
     w->load[i] = f;
     w->load_moment[i] = m;
+    if (f.x != 0 || f.y != 0 || m != 0) w->any_load = 1;
     return PL_OK;
 }
 
@@ -306,6 +307,7 @@ pl_status pl_world_set_body_density(pl_world *w, int i, double density) {
     set_mass_properties(w, i, density);
     if (w->def.dt <= 0) w->dt = 0;
     w->energy_initialised = 0;
+    w->need_rebuild = 1; /* pair dashpots depend on the masses */
     return PL_OK;
 }
 

@@ -15,16 +15,13 @@ static inline double cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y * f.x
 
 /* Shared tail of both laws: given the geometry at the contact, the relative velocity of b's
    material point with respect to a's, and the effective mass, evaluate forces and apply. */
-static void apply_law(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt, int a, int b, pl_vec2 n,
-                      double delta, pl_vec2 point, pl_vec2 vrel, double meff, double rmin) {
+static inline __attribute__((always_inline)) void apply_law(pl_world *w, pl_pair *p, const pl_pair_params *pp,
+                                                             double dt, int a, int b, pl_vec2 n, double delta,
+                                                             pl_vec2 point, pl_vec2 vrel, double rmin) {
     const pl_vec2 t = {-n.y, n.x};
     const double vn = vrel.x * n.x + vrel.y * n.y; /* < 0 while approaching */
     const double vt = vrel.x * t.x + vrel.y * t.y;
-    double cn = pp->cn, cs = pp->cs;
-    if (pp->zeta >= 0) {
-        cn = 2 * pp->zeta * sqrt(meff * pp->kn);
-        cs = pp->kn > 0 ? cn * pp->ks / pp->kn : 0;
-    }
+    const double cn = p->cn, cs = p->cs;
     const double fn_el = pp->kn * delta;
     const double fn_d = -cn * vn;
     const double fn = fn_el + fn_d;
@@ -81,17 +78,13 @@ static void apply_law(pl_world *w, pl_pair *p, const pl_pair_params *pp, double 
 }
 
 static inline void untouch(pl_pair *p) {
+    if (!p->touching) return; /* most listed pairs stay apart: do not rewrite them */
     p->touching = 0;
     p->fs = 0;
     p->fn = 0;
     p->ft = 0;
     p->overlap = 0;
     p->elastic = 0;
-}
-
-static inline double eff_mass(const pl_world *w, int a, int b) {
-    const double s = w->inv_mass[a] + w->inv_mass[b];
-    return s > 0 ? 1.0 / s : 0;
 }
 
 void pl__contact_disc_disc(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt) {
@@ -103,8 +96,8 @@ void pl__contact_disc_disc(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
         untouch(p);
         return;
     }
-    const double d = sqrt(d2);
-    const pl_vec2 n = d > 0 ? (pl_vec2){dx / d, dy / d} : (pl_vec2){0, 1};
+    const double d = sqrt(d2), id = d > 0 ? 1.0 / d : 0;
+    const pl_vec2 n = d > 0 ? (pl_vec2){dx * id, dy * id} : (pl_vec2){0, 1};
     const double delta = rs - d;
     /* contact point: midpoint of the overlap along the line of centres (seed 003 §2.2.4.2) */
     const double la = ra - 0.5 * delta, lb = rb - 0.5 * delta;
@@ -113,7 +106,7 @@ void pl__contact_disc_disc(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     const pl_vec2 va = {w->vel[a].x - w->omega[a] * la * n.y, w->vel[a].y + w->omega[a] * la * n.x};
     const pl_vec2 vb = {w->vel[b].x + w->omega[b] * lb * n.y, w->vel[b].y - w->omega[b] * lb * n.x};
     const pl_vec2 vrel = {vb.x - va.x, vb.y - va.y};
-    apply_law(w, p, pp, dt, a, b, n, delta, point, vrel, eff_mass(w, a, b), fmin(ra, rb));
+    apply_law(w, p, pp, dt, a, b, n, delta, point, vrel, ra < rb ? ra : rb);
 }
 
 void pl__contact_disc_segment(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt) {
@@ -142,14 +135,13 @@ void pl__contact_disc_segment(pl_world *w, pl_pair *p, const pl_pair_params *pp,
     const pl_vec2 rw = {point.x - w->pos[s].x, point.y - w->pos[s].y};
     const pl_vec2 vw = {w->vel[s].x - w->omega[s] * rw.y, w->vel[s].y + w->omega[s] * rw.x};
     const pl_vec2 vc = {w->vel[c].x + w->omega[c] * lc * n.y, w->vel[c].y - w->omega[c] * lc * n.x};
-    const double meff = w->inv_mass[c] > 0 ? 1.0 / w->inv_mass[c] : 0;
     if (!p->swapped) {
         /* a = disc, b = wall: flip to keep n from a to b */
         const pl_vec2 nab = {-n.x, -n.y};
         const pl_vec2 vrel = {vw.x - vc.x, vw.y - vc.y};
-        apply_law(w, p, pp, dt, c, s, nab, delta, point, vrel, meff, r);
+        apply_law(w, p, pp, dt, c, s, nab, delta, point, vrel, r);
     } else {
         const pl_vec2 vrel = {vc.x - vw.x, vc.y - vw.y};
-        apply_law(w, p, pp, dt, s, c, n, delta, point, vrel, meff, r);
+        apply_law(w, p, pp, dt, s, c, n, delta, point, vrel, r);
     }
 }

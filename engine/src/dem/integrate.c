@@ -6,7 +6,11 @@
  * and the same for rotation with C* + alpha I. The optional non-viscous damping of seed 002
  * (eqs. 24-29) reduces each component of the resultant force by lambda |F_i| against the
  * velocity. Prescribed bodies follow their law: constant velocity (MIMES set_velocity), a
- * sinusoid (shaking table) or a servo holding a force (seed 003 eqs. 5.11-5.12). */
+ * sinusoid (shaking table) or a servo holding a force (seed 003 eqs. 5.11-5.12).
+ *
+ * The same pass tallies the energy dissipated by contact dashpots and Coulomb sliding (work of
+ * those force parts with the mid-step velocities, see docs/method-dem.md), clears those parts
+ * for the next step and notes the first body whose state became non-finite (for the guards). */
 #include "dem/world_internal.h"
 #include <math.h>
 
@@ -45,70 +49,100 @@ void pl__apply_motion_laws(pl_world *w, double t, double dt) {
     }
 }
 
-/* Energy dissipated by the contact dashpots and by Coulomb sliding over one step, from the work
-   of those force parts with the mid-step velocities (the same identity the central difference
-   satisfies for kinetic energy, so the balance closes to the scheme's own accuracy):
-     D_damp = -sum_i (F_damp,i . v_mid,i + M_damp,i w_mid,i) dt
-     D_fric = -sum_i (F_shear,i . v_mid,i + M_shear,i w_mid,i) dt - (E_shear,n - E_shear,n-1)  */
-static inline void tally_contact_dissipation(pl_world *w, int i, pl_vec2 vm, double wm, double dt, double *damped,
-                                             double *work_shear) {
-    *damped -= (w->fdamp[i].x * vm.x + w->fdamp[i].y * vm.y + w->tdamp[i] * wm) * dt;
-    *work_shear += (w->fshear[i].x * vm.x + w->fshear[i].y * vm.y + w->tshear[i] * wm) * dt;
-}
-
 void pl__integrate(pl_world *w, double dt) {
     const pl_vec2 g = w->def.gravity;
     const double C = w->def.global_c, Cr = w->def.global_c_rot, alpha = w->def.rayleigh_alpha;
     const double lam = w->def.local_damping;
+    const int plain = C == 0 && Cr == 0 && alpha == 0 && lam == 0;
     double damped = 0, external = 0, work_shear = 0;
+    int bad = -1;
+    /* the neighbour list is rebuilt when some body has moved (or turned) by half the skin */
+    const double lim = 0.5 * w->skin, lim2 = lim * lim;
+    int moved = 0;
+    pl_vec2 *restrict pos = w->pos, *restrict vel = w->vel;
+    pl_vec2 *restrict fd = w->fdamp, *restrict fs = w->fshear;
+    double *restrict td = w->tdamp, *restrict ts = w->tshear;
     for (int i = 0; i < w->n; i++) {
-        if (w->motion[i] == PL_MOTION_FIXED) continue;
-        if (w->motion[i] == PL_MOTION_PRESCRIBED || w->inv_mass[i] == 0) {
-            tally_contact_dissipation(w, i, w->vel[i], w->omega[i], dt, &damped, &work_shear);
-            w->pos[i].x += w->vel[i].x * dt;
-            w->pos[i].y += w->vel[i].y * dt;
-            w->angle[i] += w->omega[i] * dt;
+        const int motion = w->motion[i];
+        if (motion == PL_MOTION_FIXED) continue;
+        pl_vec2 vm;
+        double wm;
+        if (motion == PL_MOTION_PRESCRIBED || w->inv_mass[i] == 0) {
+            vm = vel[i];
+            wm = w->omega[i];
+            /* the force on a kinematic body is the reaction of what it pushes: its work on
+               the system is minus its power */
+            external -= (w->force[i].x * vm.x + w->force[i].y * vm.y + w->torque[i] * wm) * dt;
+            pos[i].x += vm.x * dt;
+            pos[i].y += vm.y * dt;
+            w->angle[i] += wm * dt;
             if (w->vert_count[i]) pl__update_world_vertices(w, i);
-            continue;
+        } else {
+            const double im = w->inv_mass[i], ii = w->inv_inertia[i];
+            const pl_vec2 v0 = vel[i];
+            const double w0 = w->omega[i];
+            pl_vec2 v1;
+            double w1;
+            if (plain) {
+                v1.x = v0.x + (w->force[i].x * im + g.x) * dt;
+                v1.y = v0.y + (w->force[i].y * im + g.y) * dt;
+                w1 = w0 + w->torque[i] * ii * dt;
+                vm = (pl_vec2){0.5 * (v0.x + v1.x), 0.5 * (v0.y + v1.y)};
+                wm = 0.5 * (w0 + w1);
+            } else {
+                const double m = w->mass[i], I = w->inertia[i];
+                pl_vec2 F = {w->force[i].x + m * g.x, w->force[i].y + m * g.y};
+                double T = w->torque[i];
+                pl_vec2 Fl = {0, 0};
+                double Tl = 0;
+                if (lam > 0) {
+                    Fl.x = -lam * fabs(F.x) * sgn(v0.x);
+                    Fl.y = -lam * fabs(F.y) * sgn(v0.y);
+                    Tl = -lam * fabs(T) * sgn(w0);
+                    F.x += Fl.x;
+                    F.y += Fl.y;
+                    T += Tl;
+                }
+                const double c = C + alpha * m;
+                const double a = 1 - c * dt * 0.5 * im, b = 1 / (1 + c * dt * 0.5 * im);
+                v1 = (pl_vec2){(v0.x * a + F.x * dt * im) * b, (v0.y * a + F.y * dt * im) * b};
+                w1 = w0;
+                if (I > 0) {
+                    const double cr = Cr + alpha * I;
+                    const double ar = 1 - cr * dt * 0.5 * ii, br = 1 / (1 + cr * dt * 0.5 * ii);
+                    w1 = (w0 * ar + T * dt * ii) * br;
+                }
+                vm = (pl_vec2){0.5 * (v0.x + v1.x), 0.5 * (v0.y + v1.y)};
+                wm = 0.5 * (w0 + w1);
+                damped += (c * (vm.x * vm.x + vm.y * vm.y) - (Fl.x * vm.x + Fl.y * vm.y)) * dt;
+                if (I > 0) damped += ((Cr + alpha * I) * wm * wm - Tl * wm) * dt;
+            }
+            if (w->any_load) external += (w->load[i].x * vm.x + w->load[i].y * vm.y + w->load_moment[i] * wm) * dt;
+            vel[i] = v1;
+            w->omega[i] = w1;
+            pos[i].x += v1.x * dt;
+            pos[i].y += v1.y * dt;
+            w->angle[i] += w1 * dt;
+            if (bad < 0 && !isfinite(v1.x + v1.y + w1 + pos[i].x + pos[i].y)) bad = i;
+            if (w->vert_count[i]) pl__update_world_vertices(w, i);
         }
-        const double m = w->mass[i], I = w->inertia[i];
-        pl_vec2 F = {w->force[i].x + m * g.x, w->force[i].y + m * g.y};
-        double T = w->torque[i];
-        const pl_vec2 v0 = w->vel[i];
-        const double w0 = w->omega[i];
-        pl_vec2 Fl = {0, 0};
-        double Tl = 0;
-        if (lam > 0) {
-            Fl.x = -lam * fabs(F.x) * sgn(v0.x);
-            Fl.y = -lam * fabs(F.y) * sgn(v0.y);
-            Tl = -lam * fabs(T) * sgn(w0);
-            F.x += Fl.x;
-            F.y += Fl.y;
-            T += Tl;
+        if (!moved) {
+            const double dx = pos[i].x - w->pos_at_build[i].x, dy = pos[i].y - w->pos_at_build[i].y;
+            double d2 = dx * dx + dy * dy;
+            if (w->shape[i] != PL_SHAPE_DISC) {
+                const double d = sqrt(d2) + fabs(w->angle[i] - w->angle_at_build[i]) * w->radius[i];
+                d2 = d * d;
+            }
+            moved = d2 > lim2;
         }
-        const double c = C + alpha * m;
-        const double a = 1 - c * dt / (2 * m), b = 1 / (1 + c * dt / (2 * m));
-        const pl_vec2 v1 = {(v0.x * a + F.x * dt / m) * b, (v0.y * a + F.y * dt / m) * b};
-        double w1 = w0;
-        if (I > 0) {
-            const double cr = Cr + alpha * I;
-            const double ar = 1 - cr * dt / (2 * I), br = 1 / (1 + cr * dt / (2 * I));
-            w1 = (w0 * ar + T * dt / I) * br;
-        }
-        const pl_vec2 vm = {0.5 * (v0.x + v1.x), 0.5 * (v0.y + v1.y)};
-        const double wm = 0.5 * (w0 + w1);
-        damped += (c * (vm.x * vm.x + vm.y * vm.y) - (Fl.x * vm.x + Fl.y * vm.y)) * dt;
-        if (I > 0) damped += ((Cr + alpha * I) * wm * wm - Tl * wm) * dt;
-        external += (w->load[i].x * vm.x + w->load[i].y * vm.y + w->load_moment[i] * wm) * dt;
-        tally_contact_dissipation(w, i, vm, wm, dt, &damped, &work_shear);
-        w->vel[i] = v1;
-        w->omega[i] = w1;
-        w->pos[i].x += v1.x * dt;
-        w->pos[i].y += v1.y * dt;
-        w->angle[i] += w1 * dt;
-        if (w->vert_count[i]) pl__update_world_vertices(w, i);
+        damped -= (fd[i].x * vm.x + fd[i].y * vm.y + td[i] * wm) * dt;
+        work_shear += (fs[i].x * vm.x + fs[i].y * vm.y + ts[i] * wm) * dt;
+        fd[i] = fs[i] = (pl_vec2){0, 0};
+        td[i] = ts[i] = 0;
     }
     w->e_damped += damped;
     w->e_friction += -work_shear - (w->e_shear - w->e_shear_prev);
     w->e_external += external;
+    if (bad >= 0 && w->nonfinite_body < 0) w->nonfinite_body = bad;
+    if (moved) w->need_rebuild = 1;
 }

@@ -160,4 +160,5 @@ void pl__update_pair_params(pl_world *w) {
         }
     }
     w->pair_params_dirty = 0;
+    w->need_rebuild = 1; /* pairs cache their parameter index and dashpots */
 }

@@ -241,6 +241,14 @@ static pl_status rebuild(pl_world *w) {
             p->kind = kind;
             p->swapped = swapped;
             p->params = w->material[a] * w->material_count + w->material[b];
+            {
+                /* dashpots: from restitution with the pair's reduced mass, or given directly */
+                const pl_pair_params *pp = &w->pair_params[p->params];
+                const double s = w->inv_mass[a] + w->inv_mass[b];
+                const double meff = s > 0 ? 1.0 / s : 0;
+                p->cn = pp->zeta >= 0 ? 2 * pp->zeta * sqrt(meff * pp->kn) : pp->cn;
+                p->cs = pp->zeta >= 0 ? (pp->kn > 0 ? p->cn * pp->ks / pp->kn : 0) : pp->cs;
+            }
             while (old < w->pair_n && (w->pairs[old].a < a || (w->pairs[old].a == a && w->pairs[old].b < b))) old++;
             if (old < w->pair_n && w->pairs[old].a == a && w->pairs[old].b == b) {
                 const pl_pair *q = &w->pairs[old];
@@ -273,23 +281,6 @@ static pl_status rebuild(pl_world *w) {
     return PL_OK;
 }
 
-pl_status pl__neighbor_update(pl_world *w) {
-    if (!w->need_rebuild) {
-        const double lim = 0.5 * w->skin;
-        const double lim2 = lim * lim;
-        for (int i = 0; i < w->n; i++) {
-            const double dx = w->pos[i].x - w->pos_at_build[i].x, dy = w->pos[i].y - w->pos_at_build[i].y;
-            double d2 = dx * dx + dy * dy;
-            if (w->shape[i] != PL_SHAPE_DISC) {
-                /* a turning outline sweeps up to |dtheta| x bounding radius */
-                const double d = sqrt(d2) + fabs(w->angle[i] - w->angle_at_build[i]) * w->radius[i];
-                d2 = d * d;
-            }
-            if (d2 > lim2) {
-                w->need_rebuild = 1;
-                break;
-            }
-        }
-    }
-    return w->need_rebuild ? rebuild(w) : PL_OK;
-}
+/* The integrator flags a rebuild when some body has moved (or turned) by more than half the
+   skin since the last build (see integrate.c); setters flag it when they move bodies. */
+pl_status pl__neighbor_update(pl_world *w) { return w->need_rebuild ? rebuild(w) : PL_OK; }

@@ -39,6 +39,7 @@ pl_world *pl_world_create(const pl_world_def *def) {
     if (w->def.max_overlap_ratio <= 0) w->def.max_overlap_ratio = 0.5;
     if (w->def.energy_surge_ratio <= 1) w->def.energy_surge_ratio = 10;
     w->need_rebuild = 1;
+    w->nonfinite_body = -1;
     pl__flags_init(w);
     if (!w->flag_values) {
         free(w);
@@ -93,22 +94,6 @@ static void init_energy_reference(pl_world *w) {
     w->energy_initialised = 1;
 }
 
-/* Work done on the dynamic bodies by kinematic bodies and constant loads over one step. */
-static void tally_external_work(pl_world *w, double dt) {
-    double work = 0;
-    for (int i = 0; i < w->n; i++) {
-        if (w->motion[i] == PL_MOTION_DYNAMIC) {
-            /* constant loads act on dynamic bodies; their power uses the mid-step velocity,
-               added in the integrator (see integrate.c) */
-            continue;
-        }
-        /* force[i] is the reaction the dynamic bodies exert on kinematic body i, so the work
-           the kinematic body does on them is the negative of its power */
-        work -= (w->force[i].x * w->vel[i].x + w->force[i].y * w->vel[i].y + w->torque[i] * w->omega[i]) * dt;
-    }
-    w->e_external += work;
-}
-
 pl_status pl_world_step(pl_world *w, int nsteps) {
     if (nsteps < 0) return pl__error(w, PL_ERR_ARG, "step: the step count must be >= 0 (got %d)", nsteps);
     if (w->dt <= 0) pl__compute_dt(w);
@@ -123,8 +108,6 @@ pl_status pl_world_step(pl_world *w, int nsteps) {
         for (int i = 0; i < w->n; i++) {
             w->force[i] = w->load[i];
             w->torque[i] = w->load_moment[i];
-            w->fdamp[i] = w->fshear[i] = (pl_vec2){0, 0};
-            w->tdamp[i] = w->tshear[i] = 0;
         }
         pl__compute_contact_forces(w, dt);
         if (w->fluid) {
@@ -132,7 +115,6 @@ pl_status pl_world_step(pl_world *w, int nsteps) {
             if (st != PL_OK) return st;
         }
         pl__apply_motion_laws(w, w->time, dt);
-        tally_external_work(w, dt);
         pl__integrate(w, dt);
         w->time += dt;
         w->step++;

@@ -41,6 +41,7 @@ typedef struct pl_pair {
     uint8_t swapped;      /* 1 when the shape roles are swapped relative to a/b (poly-disc) */
     uint8_t pad;
     int32_t params;       /* index into world->pair_params (material pair) */
+    double cn, cs;        /* dashpots of this pair (from restitution and the pair's masses), N s/m */
     double fs;            /* shear (tangential) spring force, N (history) */
     double fn;            /* normal force of the last evaluation, N (elastic + damping) */
     double ft;            /* tangential force of the last evaluation, N (on b along t) */
@@ -90,11 +91,13 @@ struct pl_world {
     int32_t *material, *user_id;
     pl_motion *law;               /* per body (prescribed bodies) */
     pl_vec2 *load; double *load_moment; /* constant external loads */
+    int any_load;                 /* 1 once any body has a load */
     /* parts of the contact force that dissipate or store energy, for exact energy tallies:
        dashpot forces, and the tangential (Coulomb spring) forces, per body and step */
     pl_vec2 *fdamp, *fshear;
     double *tdamp, *tshear;
     double e_shear, e_shear_prev;  /* energy in the tangential springs now / one step ago */
+    int nonfinite_body;            /* set by the integrator: first body with a non-finite state, or -1 */
     pl_vec2 *x0;                  /* reference position for sinusoid laws */
     /* polygon and segment outlines: local vertices relative to the centroid at angle 0 */
     int32_t *vert_offset, *vert_count;

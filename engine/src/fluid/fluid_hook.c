@@ -12,6 +12,7 @@ pl_status pl__fluid_step(pl_world *w, double dt) {
     if (!f) return PL_OK;
     if (pl__fluid_flag(w, "FLUIDS_ON", 0) == 0) return PL_OK; /* FLUIDS_ON = 0: no fluid work at all */
     pl_status st;
+    f->out_time = w->time + dt; /* a solve in this step gives the field at its end */
     if (!f->initialised || f->mesh_dirty || f->bc_dirty) {
         pl__fluid_read_params(w, &f->par);
         /* FIRST_STEP_STATIC (seed 000 §3.9.3): static field first; otherwise one transient step

@@ -171,6 +171,7 @@ struct pl_fluid {
     int64_t steps_since;        /* grain steps since the last solve */
     double time_since;          /* time since the last solve, s */
     double time;                /* fluid time, s */
+    double out_time;            /* time written with the pressures (end of the fluid step), s */
     pl_fl_params par;
     pl_fl_params assembled_par; /* parameters used for the assembled matrix */
     /* outputs */

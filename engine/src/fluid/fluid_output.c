@@ -111,7 +111,7 @@ pl_status pl_world_fluid_append_pressures(pl_world *w, const char *path) {
     struct pl_fluid *f = w->fluid;
     FILE *fp = fopen(path, "a");
     if (!fp) return pl__error(w, PL_ERR_IO, "fluid_append_pressures: cannot write '%s'", path);
-    fprintf(fp, "%.10g", w->time);
+    fprintf(fp, "%.10g", f->out_time > w->time ? f->out_time : w->time);
     for (int i = 0; i < nn; i++) fprintf(fp, " %.10g", f->head[i] - pl_fl_z(f, f->mesh.xy[i]));
     fprintf(fp, "\n");
     if (fclose(fp) != 0) return pl__error(w, PL_ERR_IO, "fluid_append_pressures: error writing '%s'", path);

@@ -11,32 +11,30 @@
 
 static double cross(pl_vec2 a, pl_vec2 b) { return a.x * b.y - a.y * b.x; }
 
-/* Signed area of disc(0, r) intersected with triangle (0, a, b). */
+/* Signed area of disc(0, r) intersected with triangle (0, a, b). The chord a-b meets the
+   circle at parameters t1 <= t2; clamping them to [0, 1] covers every case (ends inside,
+   outside or exactly on the circle) with one formula: sector + triangle + sector. */
+static double sector(pl_vec2 u, pl_vec2 v, double r2) {
+    return 0.5 * r2 * atan2(cross(u, v), u.x * v.x + u.y * v.y);
+}
+
 static double tri_circle_signed(pl_vec2 a, pl_vec2 b, double r) {
-    double r2 = r * r;
-    double da = a.x * a.x + a.y * a.y, db = b.x * b.x + b.y * b.y;
-    if (da <= r2 && db <= r2) return 0.5 * cross(a, b);
+    const double r2 = r * r;
     pl_vec2 d = {b.x - a.x, b.y - a.y};
-    double A = d.x * d.x + d.y * d.y, B = a.x * d.x + a.y * d.y, C = da - r2;
-#define SECTOR(u, v) (0.5 * r2 * atan2(cross(u, v), (u).x * (v).x + (u).y * (v).y))
+    double A = d.x * d.x + d.y * d.y;
     if (A <= 0) return 0;
+    double B = a.x * d.x + a.y * d.y, C = a.x * a.x + a.y * a.y - r2;
     double disc = B * B - A * C;
-    if (da <= r2) { /* a inside, b outside: exit point */
-        double t = (-B + sqrt(fmax(disc, 0))) / A;
-        pl_vec2 p = {a.x + t * d.x, a.y + t * d.y};
-        return 0.5 * cross(a, p) + SECTOR(p, b);
-    }
-    if (db <= r2) { /* a outside, b inside: entry point */
-        double t = (-B - sqrt(fmax(disc, 0))) / A;
-        pl_vec2 p = {a.x + t * d.x, a.y + t * d.y};
-        return SECTOR(a, p) + 0.5 * cross(p, b);
-    }
-    if (disc <= 0) return SECTOR(a, b);
-    double sq = sqrt(disc), t1 = (-B - sq) / A, t2 = (-B + sq) / A;
-    if (t1 >= 1 || t2 <= 0) return SECTOR(a, b);
+    if (disc <= 0) return sector(a, b, r2); /* the line misses the disc */
+    double sq = sqrt(disc);
+    double t1 = (-B - sq) / A, t2 = (-B + sq) / A;
+    if (t1 < 0) t1 = 0;
+    if (t2 > 1) t2 = 1;
+    if (t1 >= t2) return sector(a, b, r2); /* the chord lies outside the disc */
     pl_vec2 p1 = {a.x + t1 * d.x, a.y + t1 * d.y}, p2 = {a.x + t2 * d.x, a.y + t2 * d.y};
-    return SECTOR(a, p1) + 0.5 * cross(p1, p2) + SECTOR(p2, b);
-#undef SECTOR
+    if (t1 == 0) p1 = a;
+    if (t2 == 1) p2 = b;
+    return sector(a, p1, r2) + 0.5 * cross(p1, p2) + sector(p2, b, r2);
 }
 
 double pl_fl_tri_disc_area(const pl_vec2 t[3], pl_vec2 c, double r) {

@@ -353,13 +353,22 @@ pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, 
 
 /* ---------------------------------------------------------------- queries */
 
+/* Queries see the field the first step will use: with FLUIDS_ON and FIRST_STEP_STATIC the
+   static solution is computed on the first query (a frame at t = 0 shows it). */
 static struct pl_fluid *built(pl_world *w) {
-    if (!w->fluid) return NULL;
-    if (w->fluid->mesh_dirty || w->fluid->bc_dirty) {
-        pl__fluid_read_params(w, &w->fluid->par);
+    struct pl_fluid *f = w->fluid;
+    if (!f) return NULL;
+    if (f->mesh_dirty || f->bc_dirty) {
+        pl__fluid_read_params(w, &f->par);
         if (ensure_built(w) != PL_OK) return NULL;
     }
-    return w->fluid;
+    if (!f->initialised && pl__fluid_flag(w, "FLUIDS_ON", 0) != 0 && pl__fluid_flag(w, "FIRST_STEP_STATIC", 0) != 0) {
+        if (pl__fluid_update(w, 0, 1) != PL_OK) return f; /* message in last_error; field stays */
+        f->initialised = 1;
+        f->steps_since = 0;
+        f->time_since = 0;
+    }
+    return f;
 }
 
 int pl_world_fluid_node_count(pl_world *w) {
