@@ -160,7 +160,37 @@ static int test_disc_quarter_density(void) {
     return 0;
 }
 
+/* FLUIDS_ON = 0 does no fluid work (the body falls freely); FLUID_SOLVE_TIMESTEPS = N solves
+   once every N grain steps. */
+static int test_flags(void) {
+    int mat;
+    pl_world *w = pond(500, &mat);
+    pl_world_set_flag(w, "FLUIDS_ON", 0);
+    pl_world_set_flag(w, "RAYLEIGH_FACTOR", 0);
+    int b = add_ellipse(w, mat, (pl_vec2){0.5, 0.3}, 0);
+    ENSURE(pl_world_step(w, 1000) == PL_OK);
+    pl_body_info bi;
+    pl_world_body_info(w, b, &bi);
+    pl_fluid_stats st;
+    pl_world_fluid_stats(w, &st);
+    fprintf(stderr, "  FLUIDS_ON 0: velocity after 0.1 s %.6f m/s (free fall %.6f), fluid updates %ld\n", bi.velocity.y,
+            -9.81 * 0.1, st.updates);
+    ENSURE(st.updates == 0);
+    ENSURE_NEAR(bi.velocity.y, -9.81 * 0.1, 1e-9);
+    pl_world_destroy(&w);
+    w = pond(500, &mat);
+    pl_world_set_flag(w, "FLUID_SOLVE_TIMESTEPS", 7);
+    pl_world_set_flag(w, "FIRST_STEP_STATIC", 0);
+    add_ellipse(w, mat, (pl_vec2){0.5, 0.3}, 0);
+    ENSURE(pl_world_step(w, 71) == PL_OK);
+    pl_world_fluid_stats(w, &st);
+    ENSURE(st.updates == 1 + 70 / 7);
+    pl_world_destroy(&w);
+    return 0;
+}
+
 int main(void) {
+    RUN(test_flags);
     RUN(test_half_density_floats_half_submerged);
     RUN(test_rotated_rights_itself);
     RUN(test_neutral_stays);

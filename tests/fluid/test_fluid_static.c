@@ -73,7 +73,6 @@ static int dam(int refine, double gy, double *q_in, double *q_out, double *hmin,
                     s1.factorizations, s0.skipped, s1.skipped);
             return 1;
         }
-        pl_world_fluid_write_vtu(w, "dam_flow.vtu");
     }
     free(h);
     pl_world_destroy(&w);
@@ -260,8 +259,84 @@ static int test_partial_submersion(void) {
     return 0;
 }
 
+/* Prescribed inflow (eq. 3.14) on the floor of a 2 x 1 box, head 0 on the top: everything
+   that enters leaves through the top (q W), and the head difference is q L / K (1D Darcy).
+   With anisotropy D_y / D_x = 3 the same flux needs a third of the head difference. */
+static int test_flux_and_anisotropy(void) {
+    for (int k = 0; k < 2; k++) {
+        double aniso = k ? 3.0 : 1.0;
+        pl_world *w = new_world(0);
+        pl_fluid_quad_def d = pl_default_fluid_quad_def();
+        d.corners[0] = (pl_vec2){0, 0};
+        d.corners[1] = (pl_vec2){2, 0};
+        d.corners[2] = (pl_vec2){2, 1};
+        d.corners[3] = (pl_vec2){0, 1};
+        d.ndivx = 6;
+        d.ndivy = 5;
+        d.anisotropy = aniso;
+        ENSURE(pl_world_add_fluid_quad(w, &d) >= 0);
+        ENSURE(pl_world_add_fluid_flux(w, (pl_vec2){0, 0}, (pl_vec2){2, 0}, 0.01) >= 0);
+        int top = pl_world_add_fluid_bc(w, (pl_vec2){0, 1}, (pl_vec2){2, 1}, 0);
+        pl_world_set_flag(w, "FLUID_PERM", 0);
+        pl_world_set_flag(w, "FLUID_PERM_HIGH", 0.5);
+        ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+        double out = -pl_world_fluid_line_inflow(w, top);
+        double h0;
+        pl_world_fluid_pressure_at(w, (pl_vec2){1, 0}, NULL, &h0);
+        fprintf(stderr, "  inflow 0.01 m/s x 2 m: outflow %.15g m^2/s; floor head %.12g (expected %.12g), D_y/D_x = %g\n", out,
+                h0, 0.01 * 1 / (0.5 * aniso), aniso);
+        ENSURE_REL(out, 0.02, 1e-10);
+        ENSURE_REL(h0, 0.01 / (0.5 * aniso), 1e-10);
+        int ne = pl_world_fluid_triangle_count(w);
+        double *vy = malloc(sizeof(double) * ne);
+        pl_world_fluid_copy_element_field(w, PL_FLUID_VELOCITY_Y, vy, ne);
+        for (int e = 0; e < ne; e++) ENSURE_REL(vy[e], 0.01, 1e-9); /* Darcy velocity = inflow */
+        free(vy);
+        pl_world_destroy(&w);
+    }
+    return 0;
+}
+
+/* Output files: VTK (.vtu) with the expected counts, MATLAB geometry (one row per node). */
+static int test_output_files(void) {
+    pl_world *w = still_water(300, 3, 2, 1000);
+    ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
+    ENSURE(pl_world_fluid_write_vtu(w, "fluid_test.vtu") == PL_OK);
+    FILE *f = fopen("fluid_test.vtu", "r");
+    ENSURE(f);
+    char line[256], want[128];
+    snprintf(want, sizeof want, "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">", nn, ne);
+    int found = 0, arrays = 0;
+    while (fgets(line, sizeof line, f)) {
+        if (strstr(line, want)) found = 1;
+        if (strstr(line, "<DataArray")) arrays++;
+    }
+    fclose(f);
+    ENSURE(found);
+    ENSURE(arrays == 1 + 3 + 4 + 1 + 5); /* points, cells (3), node fields, velocity, element fields */
+    ENSURE(pl_world_fluid_write_geometry(w, "fluid_test.flu") == PL_OK);
+    f = fopen("fluid_test.flu", "r");
+    ENSURE(f);
+    int rows = 0;
+    while (fgets(line, sizeof line, f)) rows += line[0] != '%';
+    fclose(f);
+    ENSURE(rows == nn);
+    const char *files[1] = {"fluid_test.vtu"};
+    double times[1] = {0};
+    ENSURE(pl_fluid_write_pvd("fluid_test.pvd", files, times, 1) == PL_OK);
+    remove("fluid_test.vtu");
+    remove("fluid_test.flu");
+    remove("fluid_test.flu.tri");
+    remove("fluid_test.pvd");
+    pl_world_destroy(&w);
+    return 0;
+}
+
 int main(void) {
     RUN(test_dam_flow);
+    RUN(test_flux_and_anisotropy);
+    RUN(test_output_files);
     RUN(test_hydrostatic);
     RUN(test_archimedes);
     RUN(test_partial_submersion);

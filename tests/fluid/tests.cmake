@@ -6,3 +6,16 @@ pl_add_c_test(test_fluid_wave SOURCES ${PL_TEST_DIR}/fluid/test_fluid_wave.c LAB
 target_include_directories(test_fluid_wave PRIVATE ${CHOLMOD_INCLUDE})
 pl_add_c_test(test_fluid_buoyancy SOURCES ${PL_TEST_DIR}/fluid/test_fluid_buoyancy.c LABEL fluid TIMEOUT 60)
 pl_add_c_test(test_fluid_bed SOURCES ${PL_TEST_DIR}/fluid/test_fluid_bed.c LABEL fluid TIMEOUT 120)
+pl_add_c_test(test_fluid_porosity SOURCES ${PL_TEST_DIR}/fluid/test_fluid_porosity.c LABEL fluid TIMEOUT 60)
+target_include_directories(test_fluid_porosity PRIVATE ${CHOLMOD_INCLUDE})
+# Benchmark (not a test): tests/bench/bench_fluid.c; FreeFEM++ comparison: tests/bench/run_freefem.sh
+add_executable(bench_fluid ${PL_TEST_DIR}/bench/bench_fluid.c)
+target_link_libraries(bench_fluid PRIVATE porelab_engine)
+# Charts for docs/fluid.md (PLplot): build the target fluid_charts and run it with docs/img.
+find_library(PLPLOT_LIB plplot)
+find_path(PLPLOT_INCLUDE plplot.h PATH_SUFFIXES plplot)
+if(PLPLOT_LIB AND PLPLOT_INCLUDE)
+  add_executable(fluid_charts EXCLUDE_FROM_ALL ${PL_TEST_DIR}/bench/fluid_charts.c)
+  target_include_directories(fluid_charts PRIVATE ${PLPLOT_INCLUDE})
+  target_link_libraries(fluid_charts PRIVATE porelab_engine ${PLPLOT_LIB})
+endif()

@@ -164,6 +164,12 @@ pl_status pl_world_set_sinusoid(pl_world *w, int body, pl_vec2 amplitude, double
 /// contact force it receives holds F_target (N, > 0). gain and vmax in m/s.
 pl_status pl_world_set_servo(pl_world *w, int body, pl_vec2 direction, double target_force, double gain,
                              double vmax);
+/// Hinged side wall of a simple-shear box (seed 003 §5.4-5.6): the body turns about the fixed
+/// pivot so that it stays at the angle atan(dx / height) from its initial direction, where dx is
+/// the horizontal displacement of the body `follow` (the top wall, moving under its own law)
+/// since this call. With the top wall at a fixed height this gives constant-volume simple shear;
+/// with a sinusoidal top wall, cyclic shear. height in m (> 0).
+pl_status pl_world_set_hinge(pl_world *w, int body, pl_vec2 pivot, int follow, double height);
 /// Sets a new density for a body (mass and inertia recomputed from its outline).
 pl_status pl_world_set_body_density(pl_world *w, int body, double density);
 

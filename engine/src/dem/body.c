@@ -351,3 +351,29 @@ pl_status pl_world_set_servo(pl_world *w, int i, pl_vec2 dir, double target, dou
     if (w->def.dt <= 0) w->dt = 0;
     return PL_OK;
 }
+
+pl_status pl_world_set_hinge(pl_world *w, int i, pl_vec2 pivot, int follow, double height) {
+    CHECK_BODY(w, i, "set_hinge");
+    if (bad_body(w, follow) || follow == i)
+        return pl__error(w, PL_ERR_ARG, "hinge: the followed body must be another body in 0..%d (got %d)", w->n - 1,
+                         follow);
+    if (!finite2(pivot)) return pl__error(w, PL_ERR_ARG, "hinge: pivot must be finite");
+    if (!(height > 0) || !isfinite(height))
+        return pl__error(w, PL_ERR_ARG, "hinge: height must be > 0 m (got %g)", height);
+    if (w->motion[follow] == PL_MOTION_DYNAMIC)
+        return pl__error(w, PL_ERR_ARG, "hinge: the followed body %d must be prescribed (give it a motion law)", follow);
+    w->motion[i] = PL_MOTION_PRESCRIBED;
+    set_mass_properties(w, i, w->materials[w->material[i]].def.density);
+    memset(&w->law[i], 0, sizeof w->law[i]);
+    w->law[i].law = PL_LAW_HINGE;
+    w->law[i].pivot = pivot;
+    w->law[i].rel0 = (pl_vec2){w->pos[i].x - pivot.x, w->pos[i].y - pivot.y};
+    w->law[i].angle0 = w->angle[i];
+    w->law[i].follow = follow;
+    w->law[i].follow_x0 = w->pos[follow].x;
+    w->law[i].height = height;
+    w->need_rebuild = 1;
+    w->classify_dirty = 1;
+    if (w->def.dt <= 0) w->dt = 0;
+    return PL_OK;
+}

@@ -9,7 +9,8 @@
  *   elastic         F_el = Y A / l_char, Y = k_N of the pair (N/m in 2D),
  *                   l_char = 4 |l1| |l2| / (|l1| + |l2|) (seed 004 eq. 1); wall: l_char = |l1|
  *   damping         F_da = c (dA/dt) / w, w the chord length, c = 2 zeta sqrt(m_red k_eff)
- *                   with k_eff = Y w / l_char (or c = c_N given), |F_da| <= F_el (seed 004 eq. 2)
+ *                   with k_eff = Y w / l_char (or c = c_N given), |F_da| <= F_el (seed 004 eq. 2),
+ *                   plus the couple of the same distributed dashpot, -(c w^2 / 12) (w_b - w_a)
  *   friction        incremental tangential spring k_t = k_S k_eff / k_N with the Coulomb cap
  *                   |F_t| <= mu F_el + c (return mapping; the regularized Coulomb law of
  *                   seed 002 §2.3.3), tangential dashpot while sticking as in the disc law
@@ -159,6 +160,15 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     if (fda > fel) fda = fel;
     if (fda < -fel) fda = -fel;
     const double fn = fel + fda;
+    /* The moment of the same distributed dashpot: a relative rotation w_rel presses one end
+     * of the contact in and lifts the other, d'(x) = w_rel x, and integrating (c / w) d'(x) x
+     * over the width gives the couple -(c w^2 / 12) w_rel. Eq. 2 alone (a resultant on dA/dt)
+     * leaves rocking on a face undamped, since the area hardly changes while it rocks. Capped
+     * like eq. 2 by the largest moment the elastic pressure can exert, F_el w / 2. */
+    const double wrel = w->omega[b] - w->omega[a];
+    double mda = -cn * width * width / 12 * wrel;
+    if (mda > 0.5 * fel * width) mda = 0.5 * fel * width;
+    if (mda < -0.5 * fel * width) mda = -0.5 * fel * width;
 
     /* friction: incremental tangential spring with the Coulomb cap */
     const double kt = pp->kn > 0 ? pp->ks * keff / pp->kn : pp->ks;
@@ -186,7 +196,7 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     /* stored energy: exact for a contact of constant width (A = w depth); see the docs */
     p->elastic = 0.5 * fel * depth + (kt > 0 ? 0.5 * fs * fs / kt : 0);
     /* dissipation = work the dashpots take out of the bodies during this step */
-    w->e_damped += (-fda * vn - fd * vt) * dt;
+    w->e_damped += (-fda * vn - fd * vt - mda * wrel) * dt;
 
     const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
     w->force[b].x += F.x;
@@ -195,8 +205,8 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     w->force[a].y -= F.y;
     const pl_vec2 ra = {g.s.x - w->pos[a].x, g.s.y - w->pos[a].y};
     const pl_vec2 rb = {g.s.x - w->pos[b].x, g.s.y - w->pos[b].y};
-    w->torque[b] += cross2(rb, F);
-    w->torque[a] -= cross2(ra, F);
+    w->torque[b] += cross2(rb, F) + mda;
+    w->torque[a] -= cross2(ra, F) + mda;
 
     const double rmin = g.wall ? w->radius[w->shape[a] == PL_SHAPE_SEGMENT ? b : a]
                                : fmin(w->radius[a], w->radius[b]);

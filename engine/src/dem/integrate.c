@@ -47,6 +47,19 @@ void pl__apply_motion_laws(pl_world *w, double t, double dt) {
         default: break;
         }
     }
+    /* hinged walls follow the others, whose velocities for this step are now known */
+    for (int i = 0; i < w->n; i++) {
+        if (w->motion[i] != PL_MOTION_PRESCRIBED || w->law[i].law != PL_LAW_HINGE) continue;
+        const pl_motion *m = &w->law[i];
+        const int f = m->follow;
+        const double dx = w->pos[f].x + w->vel[f].x * dt - m->follow_x0;
+        /* clockwise turn for a positive shear displacement (the top moves right) */
+        const double th = m->angle0 - atan(dx / m->height);
+        const double c = cos(th - m->angle0), s = sin(th - m->angle0);
+        const pl_vec2 target = {m->pivot.x + c * m->rel0.x - s * m->rel0.y, m->pivot.y + s * m->rel0.x + c * m->rel0.y};
+        w->vel[i] = (pl_vec2){(target.x - w->pos[i].x) / dt, (target.y - w->pos[i].y) / dt};
+        w->omega[i] = (th - w->angle[i]) / dt;
+    }
 }
 
 void pl__integrate(pl_world *w, double dt) {

@@ -87,6 +87,15 @@ pl_dt_report pl_world_dt_report(pl_world *w) {
 /* Energy reference: taken at the first step and again whenever the scene changes the world
    between steps (new bodies, new velocities), so the balance measures the integration only. */
 static void init_energy_reference(pl_world *w) {
+    /* evaluate the contacts once without advancing (dt = 0 leaves the shear history as it
+       is) so that energy stored in overlaps present at the start is counted */
+    if (pl__neighbor_update(w) == PL_OK) {
+        pl__compute_contact_forces(w, 0);
+        for (int i = 0; i < w->n; i++) {
+            w->fdamp[i] = w->fshear[i] = (pl_vec2){0, 0};
+            w->tdamp[i] = w->tshear[i] = 0;
+        }
+    }
     w->e_supply0 = pl__kinetic_energy(w) + pl__elastic_energy(w);
     w->pe0 = pl__gravitational_energy(w);
     w->ext0 = w->e_external;

@@ -56,7 +56,8 @@ typedef struct pl_pair {
 typedef enum pl_motion_law {
     PL_LAW_CONSTANT = 0,  /* constant velocity (MIMES set_velocity) */
     PL_LAW_SINUSOID = 1,  /* x(t) = x0 + A sin(2 pi f (t - t0)) between t0 and t1 */
-    PL_LAW_SERVO = 2      /* servo wall holding a force (seed 003 eqs. 5.11-5.12) */
+    PL_LAW_SERVO = 2,     /* servo wall holding a force (seed 003 eqs. 5.11-5.12) */
+    PL_LAW_HINGE = 3      /* side wall of a simple-shear box turning about a pivot */
 } pl_motion_law;
 
 typedef struct pl_motion {
@@ -65,6 +66,7 @@ typedef struct pl_motion {
     pl_vec2 amplitude; double frequency; /* sinusoid: displacement amplitude (m), Hz */
     double t_start, t_stop;
     pl_vec2 servo_dir; double servo_target; double servo_gain; double servo_vmax;
+    pl_vec2 pivot, rel0; double angle0; int follow; double follow_x0, height; /* hinge */
 } pl_motion;
 
 struct pl_fluid; /* fluid module (engine/src/fluid) */

@@ -1,0 +1,122 @@
+/* Boundary motions: shaking table (sinusoid), servo wall (seed 003 eqs. 5.11-5.12), hinged
+ * simple-shear walls (seed 003 §5.4-5.6), and allocation-free stepping once settled. */
+#include "common.h"
+#include "harness.h"
+#include <malloc.h>
+
+static int sinusoid_follows_law(void) {
+    pl_world_def d = pl_default_world_def();
+    d.dt = 1e-4;
+    pl_world *w = pl_world_create(&d);
+    const int m = add_material(w, "m", 2500, 1e6, -1, 0.5, 0, -1);
+    const int table = add_wall(w, m, -1, 0, 1, 0);
+    const int disc = add_disc(w, m, 0, 0.0099, 0.01);
+    ENSURE(pl_world_set_sinusoid(w, table, (pl_vec2){0.002, 0.001}, 5, 0.1, 0.5) == PL_OK);
+    for (int k = 1; k <= 6; k++) {
+        if (pl_world_step(w, 1000) != PL_OK) {
+            fprintf(stderr, "  %s\n", pl_world_last_error(w));
+            return 1;
+        }
+        const double t = pl_world_time(w);
+        const double ph = t < 0.1 ? 0 : sin(2 * M_PI * 5 * (fmin(t, 0.5) - 0.1));
+        const pl_body_info b = body(w, table);
+        ENSURE_NEAR(b.position.x, 0.002 * ph, 1e-12);
+        ENSURE_NEAR(b.position.y, 0.001 * ph, 1e-12);
+    }
+    /* the table did work on the disc riding on it */
+    const pl_energy e = pl_world_energy(w);
+    fprintf(stderr, "  table work on the disc %.4g J, balance %.3g J, disc at y = %.5f\n", e.external, e.balance,
+            body(w, disc).position.y);
+    ENSURE(fabs(e.external) > 0);
+    ENSURE(fabs(e.balance) < 0.05 * (e.damped + e.friction + fabs(e.external)) + 1e-9);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+static int servo_holds_force(void) {
+    pl_world_def d = pl_default_world_def();
+    d.gravity = (pl_vec2){0, 0};
+    d.global_c = 5;
+    pl_world *w = pl_world_create(&d);
+    const int m = add_material(w, "m", 2500, 1e6, -1, 0.3, 0, -1);
+    add_wall(w, m, 0, 0, 0.1, 0);
+    add_wall(w, m, 0, 0, 0, 0.2);
+    add_wall(w, m, 0.1, 0, 0.1, 0.2);
+    for (int j = 0; j < 5; j++)
+        for (int i = 0; i < 5; i++) add_disc(w, m, 0.01 + 0.02 * i, 0.01 + 0.021 * j, 0.0099);
+    const int piston = add_wall(w, m, 0, 0.12, 0.1, 0.12);
+    const double target = 200; /* N per metre of depth */
+    ENSURE(pl_world_set_servo(w, piston, (pl_vec2){0, -1}, target, 0.5, 0.2) == PL_OK);
+    ENSURE(pl_world_step(w, (int)(1.0 / pl_world_dt(w))) == PL_OK);
+    double fmax = 0, fmin = 1e300;
+    for (int k = 0; k < 200; k++) {
+        ENSURE(pl_world_step(w, 10) == PL_OK);
+        const double f = body(w, piston).force.y; /* grains push the piston up */
+        fmax = fmax < f ? f : fmax;
+        fmin = fmin > f ? f : fmin;
+    }
+    fprintf(stderr, "  servo: piston force %.2f .. %.2f N (target %.0f)\n", fmin, fmax, target);
+    ENSURE_NEAR(fmin, target, 0.01 * target);
+    ENSURE_NEAR(fmax, target, 0.01 * target);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+static int hinged_walls_follow_top(void) {
+    pl_world_def d = pl_default_world_def();
+    d.gravity = (pl_vec2){0, 0};
+    d.dt = 1e-4;
+    pl_world *w = pl_world_create(&d);
+    const int m = add_material(w, "m", 2500, 1e6, -1, 0.3, 0, -1);
+    const double H = 0.1;
+    const int left = add_wall(w, m, 0, 0, 0, 1.5 * H);
+    const int right = add_wall(w, m, 0.2, 0, 0.2, 1.5 * H);
+    const int top = add_wall(w, m, -0.1, H, 0.3, H);
+    add_disc(w, m, 0.1, 0.05, 0.01);
+    ENSURE(pl_world_prescribe_velocity(w, top, (pl_vec2){0.01, 0}, 0) == PL_OK);
+    ENSURE(pl_world_set_hinge(w, left, (pl_vec2){0, 0}, top, H) == PL_OK);
+    ENSURE(pl_world_set_hinge(w, right, (pl_vec2){0.2, 0}, top, H) == PL_OK);
+    ENSURE(pl_world_step(w, 30000) == PL_OK); /* 3 s: top moved 0.03 m, shear strain 0.3 */
+    const double dx = body(w, top).position.x - 0.1;
+    ENSURE_NEAR(dx, 0.03, 1e-9);
+    pl_vec2 v[2];
+    pl_world_body_vertices(w, left, v, 2);
+    /* the left wall stays a line through its pivot with slope dx / H, and keeps its length */
+    ENSURE_NEAR(v[0].x, 0, 1e-9);
+    ENSURE_NEAR(v[0].y, 0, 1e-9);
+    ENSURE_NEAR((v[1].x - v[0].x) / (v[1].y - v[0].y), dx / H, 1e-9);
+    ENSURE_NEAR(hypot(v[1].x - v[0].x, v[1].y - v[0].y), 1.5 * H, 1e-9);
+    pl_world_body_vertices(w, right, v, 2);
+    ENSURE_NEAR(v[0].x, 0.2, 1e-9);
+    ENSURE_NEAR((v[1].x - v[0].x) / (v[1].y - v[0].y), dx / H, 1e-9);
+    fprintf(stderr, "  hinge: top displaced %.4f m, side walls at %.4f rad\n", dx, atan(dx / H));
+    pl_world_destroy(&w);
+    return 0;
+}
+
+static int settled_stepping_allocates_nothing(void) {
+    pl_world_def d = pl_default_world_def();
+    pl_world *w = pl_world_create(&d);
+    const int m = add_material(w, "m", 2500, 1e6, -1, 0.5, 0, -1);
+    add_wall(w, m, 0, 0, 0.4, 0);
+    add_wall(w, m, 0, 0, 0, 0.4);
+    add_wall(w, m, 0.4, 0, 0.4, 0.4);
+    for (int j = 0; j < 10; j++)
+        for (int i = 0; i < 19; i++) add_disc(w, m, 0.011 + 0.02 * i + 0.002 * (j % 2), 0.011 + 0.0205 * j, 0.0095 + 0.0005 * (i % 2));
+    ENSURE(pl_world_step(w, 20000) == PL_OK);
+    const struct mallinfo2 a = mallinfo2();
+    ENSURE(pl_world_step(w, 5000) == PL_OK);
+    const struct mallinfo2 b = mallinfo2();
+    fprintf(stderr, "  heap in use before/after 5000 settled steps: %zu / %zu bytes\n", a.uordblks, b.uordblks);
+    ENSURE(a.uordblks == b.uordblks && a.hblkhd == b.hblkhd);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+int main(void) {
+    RUN(sinusoid_follows_law);
+    RUN(servo_holds_force);
+    RUN(hinged_walls_follow_top);
+    RUN(settled_stepping_allocates_nothing);
+    return pl_test_report();
+}
