@@ -63,6 +63,11 @@ typedef struct pl_render_options {
     const struct pl_draw_list *overlay; ///< scene-drawn primitives (world or pixel space) drawn
                               ///< with PL_LAYER_OVERLAY; not owned; default NULL
     double time_offset;       ///< added to the world time in the time stamp, s; default 0
+    int fluid_field;          ///< node field for PL_LAYER_PRESSURE / ISOLINES: a pl_fluid_node_field
+                              ///< (porelab/fluid.h); default PL_FLUID_PRESSURE (Pa)
+    int isoline_count;        ///< about this many nice isoline levels; default 10
+    double fluid_min, fluid_max; ///< range of the fluid field; fluid_max <= fluid_min = automatic
+    double velocity_scale;    ///< arrow length per unit Darcy velocity, m per (m/s); 0 = automatic
 } pl_render_options;
 
 pl_render_options pl_default_render_options(void);

@@ -131,8 +131,8 @@ static void wave_profiles(const char *dir) {
             double lw, lh;
             int tc[6] = {1, 1, 1, 1, 1, 1};
             pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0,
-                     6, opt, 1.0, 0.8, 2.0, 1.0, tc, (const char **)txt, NULL, NULL, NULL, NULL, NULL, NULL, NULL, col, sty,
-                     wid, NULL, NULL, NULL, NULL);
+                     6, opt, 1.0, 0.8, 2.0, 1.0, tc, (const char **)txt, NULL, NULL, NULL, NULL, col, sty, wid, NULL, NULL,
+                     NULL, NULL);
         }
     }
     plend();
@@ -182,14 +182,12 @@ static void error_cpu(const char *dir) {
         plline(4, lx, ly);
         plpoin(4, lx, ly, 4);
     }
-    int opt[3] = {PL_LEGEND_LINE | PL_LEGEND_SYMBOL, PL_LEGEND_LINE | PL_LEGEND_SYMBOL, PL_LEGEND_LINE | PL_LEGEND_SYMBOL};
-    int tc[3] = {1, 1, 1}, sty[3] = {1, 1, 1}, sn[3] = {1, 1, 1};
-    double wid[3] = {1, 1, 1}, ss[3] = {1, 1, 1};
-    const char *sym[3] = {"#(728)", "#(728)", "#(728)"};
+    int opt[3] = {PL_LEGEND_LINE, PL_LEGEND_LINE, PL_LEGEND_LINE};
+    int tc[3] = {1, 1, 1}, sty[3] = {1, 1, 1};
+    double wid[3] = {1, 1, 1};
     double lw, lh;
     pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0, 3,
-             opt, 1.0, 0.8, 2.0, 1.0, tc, names, NULL, NULL, NULL, NULL, colors, ss, sn, colors, sty, wid, colors, ss, sn,
-             sym);
+             opt, 1.0, 0.8, 2.0, 1.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, NULL, NULL, NULL, NULL);
     plend();
 }
 

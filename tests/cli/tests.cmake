@@ -52,6 +52,15 @@ pl_cli_test(bad_return_value RC 1 ARGS run ${PL_BAD}/bad_return.lua --quiet
   MATCH "bad_return.lua: the scene must return nothing .*\\(got number\\)")
 pl_cli_test(bad_render_layer RC 1 ARGS run ${PL_BAD}/bad_render.lua --quiet
   MATCH "bad_render.lua: render: layers: unknown layer 'force'")
+pl_cli_test(bad_overlay RC 1
+  ARGS run ${PL_BAD}/bad_overlay.lua --quiet --out ${PL_CLI_OUT}/bad_overlay
+  MATCH "bad_overlay.lua: render: overlay\\[2\\]: radius must be > 0 .*\\(got -1\\)"
+  MATCH2 "run stopped at t = 0 s \\(step 0 of")
+pl_cli_test(run_unstable RC 1
+  ARGS run ${PL_BAD}/unstable.lua --quiet --out ${PL_CLI_OUT}/unstable
+  MATCH "run stopped at t = [0-9.]+ s \\(step [0-9]+ of 2000\\): .*(unstable|overlap|NaN|energy)"
+  MATCH2 "frames? kept in .*unstable/"
+  EXPECT_FILE ${PL_CLI_OUT}/unstable/frame_000000.png)
 pl_cli_test(bad_hook_error RC 1
   ARGS run ${PL_BAD}/hook_error.lua --quiet --out ${PL_CLI_OUT}/hook_error
   MATCH "hook_error.lua:10: hook failed at frame 2"

@@ -204,6 +204,22 @@ static int test_archimedes(void) {
     ENSURE_REL(F.y, rho * g * Ad, 1e-10);
     ENSURE_NEAR(F.x, 0, 1e-10 * rho * g * Ad);
     pl_world_destroy(&w);
+    /* a large disc and polygon over a fine mesh (thousands of elements under each) */
+    w = still_water(300, 60, 60, rho);
+    d = add_disc(w, (pl_vec2){190.3, 180.1}, 61.3);
+    pl_vec2 oct[8];
+    for (int k = 0; k < 8; k++) oct[k] = (pl_vec2){200 + 70 * cos(0.2 + k * 0.785398), 210 + 70 * sin(0.2 + k * 0.785398)};
+    b = add_poly(w, oct, 8);
+    ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    ENSURE(pl_world_fluid_body_force(w, d, &F, &M) == PL_OK);
+    Ad = 3.141592653589793 * 61.3 * 61.3;
+    fprintf(stderr, "  large disc on a 60 x 60 mesh: F_y = %.15g, rho g pi r^2 = %.15g\n", F.y, rho * g * Ad);
+    ENSURE_REL(F.y, rho * g * Ad, 1e-10);
+    ENSURE(pl_world_fluid_body_force(w, b, &F, &M) == PL_OK);
+    A = poly_area(oct, 8, &c);
+    ENSURE_REL(F.y, rho * g * A, 1e-10);
+    ENSURE_NEAR(M, 0, 1e-10 * rho * g * A * 70);
+    pl_world_destroy(&w);
     return 0;
 }
 

@@ -3,7 +3,8 @@
  * of polygons reaches a clearly larger angle of repose than a heap of discs with the same
  * friction (report both angles)").
  *
- * The same column of 150 grains (10 x 15 on a 1.6 cm grid) collapses on a floor, once as
+ * 150 grains are poured on a floor (three every 0.06 s, released 2.5 cm above the heap's top
+ * near x = 0), once as
  * random convex polygons inscribed in ellipses (5-9 corners, half axes 5-7.5 mm, aspect
  * 0.6-1, seed 004 §2.1) and once as discs of the same areas; same density, stiffness,
  * restitution and friction mu = 0.5 (grain-grain and grain-floor). After the grains come to
@@ -86,31 +87,42 @@ static int run_heap(int polygons, heap_result *r) {
     pl_rng rng;
     pl_rng_seed(&rng, 2020);
     const pl_random_polygon_def pd = pl_default_random_polygon_def();
-    for (int k = 0; k < NB; k++) {
-        const pl_vec2 c = {-0.072 + 0.016 * (k % 10) + pl_rng_range(&rng, -1e-3, 1e-3),
-                           0.010 + 0.016 * (k / 10)};
-        pl_vec2 v[64];
-        const int n = pl_shape_random_polygon(&pd, &rng, c, v, 64, NULL, 0);
-        if (n < 3) return 0;
-        int id;
-        if (polygons) {
-            id = poly_add(w, m, v, n, PL_MOTION_DYNAMIC);
-        } else {
-            /* disc of the same area at the polygon's centroid */
-            pl_mass_props mp;
-            pl_polygon_mass_properties(v, n, 2650, &mp, NULL, 0);
-            id = poly_add_disc(w, m, mp.centroid.x, mp.centroid.y, sqrt(mp.area / PI));
+    int added = 0, ok = 1;
+    double dt = 0;
+    for (int s = 0; s < 200 && ok; s++) { /* at most 12 s */
+        if (added < NB) {
+            /* pour: three grains every 0.06 s, released 2.5 cm above the heap's top (the
+             * highest slow grain near x = 0), and at least 1.6 cm above the grains still
+             * falling there */
+            double top = 0, high = 0;
+            for (int i = first; i < pl_world_body_count(w); i++) {
+                const pl_body_info b = poly_body(w, i);
+                const double v = hypot(b.velocity.x, b.velocity.y);
+                if (fabs(b.position.x) < 0.03 && v < 0.1) top = fmax(top, b.position.y);
+                if (fabs(b.position.x) < 0.03) high = fmax(high, b.position.y);
+            }
+            top = fmax(top, high - 0.025 + 0.016); /* clear of the last batch still falling */
+            for (int j = 0; j < 3 && added < NB; j++, added++) {
+                const pl_vec2 c = {-0.015 + 0.015 * j + pl_rng_range(&rng, -2e-3, 2e-3), top + 0.025};
+                pl_vec2 v[64];
+                const int n = pl_shape_random_polygon(&pd, &rng, c, v, 64, NULL, 0);
+                if (n < 3) return 0;
+                int id;
+                if (polygons) {
+                    id = poly_add(w, m, v, n, PL_MOTION_DYNAMIC);
+                } else {
+                    /* disc of the same area at the polygon's centroid */
+                    pl_mass_props mp;
+                    pl_polygon_mass_properties(v, n, 2650, &mp, NULL, 0);
+                    id = poly_add_disc(w, m, mp.centroid.x, mp.centroid.y, sqrt(mp.area / PI));
+                }
+                if (id < 0) return 0;
+            }
+            dt = pl_world_dt(w);
         }
-        if (id < 0) return 0;
-    }
-    const double dt = pl_world_dt(w);
-    int ok = 1;
-    const int chunk = (int)(0.05 / dt);
-    for (int s = 0; s < 80; s++) { /* at most 4 s */
-        if (!poly_run(w, chunk)) { ok = 0; break; }
-        const pl_energy e = pl_world_energy(w);
-        r->ke = e.kinetic;
-        if (s >= 20 && e.kinetic < 1e-6) break;
+        if (!poly_run(w, (int)(0.06 / dt))) ok = 0;
+        r->ke = pl_world_energy(w).kinetic;
+        if (added >= NB && r->ke < 1e-6) break;
     }
     r->time = pl_world_time(w);
     measure(w, first, r);

@@ -41,6 +41,8 @@ pl_world *pl_world_create(const pl_world_def *def);
 void pl_world_destroy(pl_world **world);
 
 /// Message describing the last error (what, where, when, what to change). Never NULL.
+/// Messages about the state of a run (guards) number bodies from 1, as scenes do; argument
+/// errors of C calls name the 0-based index the caller passed.
 const char *pl_world_last_error(const pl_world *w);
 
 /* -------------------------------------------------------------- materials */

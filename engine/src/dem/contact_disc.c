@@ -42,7 +42,7 @@ static inline __attribute__((always_inline)) void apply_law(pl_world *w, pl_pair
     p->normal = n;
     p->point = point;
     p->touching = 1;
-    const double es = pp->ks > 0 ? 0.5 * fs * fs / pp->ks : 0;
+    const double es = 0.5 * fs * fs * pp->inv_ks;
     p->elastic = 0.5 * fn_el * delta + es;
     w->e_shear += es;
     const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};

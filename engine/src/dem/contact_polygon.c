@@ -45,8 +45,53 @@ typedef struct geo {
     pl_vec2 s;     /* overlap centroid */
     pl_vec2 n;     /* unit normal a -> b */
     double chord;  /* contact width w, m */
+    double thick;  /* extent of the overlap region along n, m */
     int wall;      /* 1 when one of the bodies is a wall segment */
 } geo;
+
+/* Extent of the overlap polygon along n. */
+static double thickness(const pl_overlap *o, pl_vec2 n) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < o->n; k++) {
+        const double s = dot2(o->v[k], n);
+        lo = fmin(lo, s);
+        hi = fmax(hi, s);
+    }
+    return o->n > 0 ? hi - lo : 0;
+}
+
+/* Extent along n of disc (c, r) intersected with polygon q: attained at polygon corners
+ * inside the disc, at the crossing points, or at the circle's extreme points c -+ r n when
+ * they lie inside the polygon. */
+static double disc_thickness(const pl_overlap *o, pl_vec2 c, double r, const pl_vec2 *q, int nq,
+                             pl_vec2 n) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < nq; k++) {
+        const double dx = q[k].x - c.x, dy = q[k].y - c.y;
+        if (dx * dx + dy * dy <= r * r) {
+            lo = fmin(lo, dot2(q[k], n));
+            hi = fmax(hi, dot2(q[k], n));
+        }
+    }
+    const int m = o->cross_n < PL_CLIP_MAX_CROSS ? o->cross_n : PL_CLIP_MAX_CROSS;
+    for (int k = 0; k < m; k++) {
+        lo = fmin(lo, dot2(o->cross[k], n));
+        hi = fmax(hi, dot2(o->cross[k], n));
+    }
+    for (int sgn = -1; sgn <= 1; sgn += 2) {
+        const pl_vec2 e = {c.x + sgn * r * n.x, c.y + sgn * r * n.y};
+        int inside = 1;
+        for (int k = 0; k < nq && inside; k++) {
+            const pl_vec2 a = q[k], b = q[k + 1 < nq ? k + 1 : 0];
+            if ((b.x - a.x) * (e.y - a.y) - (b.y - a.y) * (e.x - a.x) < 0) inside = 0;
+        }
+        if (inside) {
+            lo = fmin(lo, dot2(e, n));
+            hi = fmax(hi, dot2(e, n));
+        }
+    }
+    return hi > lo ? hi - lo : 0;
+}
 
 /* Fills g from the overlap (first outline = body `first`); returns 0 when not touching. */
 static int finish_geometry(const pl_world *w, const pl_overlap *o, int first, int a, int b,
@@ -83,7 +128,9 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
         const pl_vec2 *va = &w->verts_world[w->vert_offset[a]];
         const pl_vec2 *vb = &w->verts_world[w->vert_offset[b]];
         if (!(pl_clip_convex(va, w->vert_count[a], vb, w->vert_count[b], &o) > 0)) return 0;
-        return finish_geometry(w, &o, a, a, b, g);
+        finish_geometry(w, &o, a, a, b, g);
+        g->thick = thickness(&o, g->n);
+        return 1;
     }
     if (sa == PL_SHAPE_SEGMENT || sb == PL_SHAPE_SEGMENT) {
         const int s = sa == PL_SHAPE_SEGMENT ? a : b, q = s == a ? b : a;
@@ -99,6 +146,7 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
         /* the wall normal points to the polygon; n runs from a to b */
         g->n = q == a ? (pl_vec2){-nw.x, -nw.y} : nw;
         g->chord = o.chord > 0 ? o.chord : sqrt(o.area);
+        g->thick = thickness(&o, g->n);
         return 1;
     }
     /* polygon and disc */
@@ -108,7 +156,9 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
     if (dx * dx + dy * dy >= rs * rs) return 0;
     const pl_vec2 *vq = &w->verts_world[w->vert_offset[q]];
     if (!(pl_clip_disc(w->pos[d], w->radius[d], vq, w->vert_count[q], &o) > 0)) return 0;
-    return finish_geometry(w, &o, q, a, b, g);
+    finish_geometry(w, &o, q, a, b, g);
+    g->thick = disc_thickness(&o, w->pos[d], w->radius[d], vq, w->vert_count[q], g->n);
+    return 1;
 }
 
 /* l_char of seed 004 eq. 1; for a wall (rigid, no centre) the spring spans only the
@@ -193,8 +243,11 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     p->normal = n;
     p->point = g.s;
     p->touching = 1;
-    /* stored energy: exact for a contact of constant width (A = w depth); see the docs */
-    p->elastic = 0.5 * fel * depth + (kt > 0 ? 0.5 * fs * fs / kt : 0);
+    /* stored energy int F_el d(delta) for an overlap growing as A ~ delta^q with the current
+     * exponent q = w h / A (h the overlap's thickness along n): F_el h / (q + 1); exact for a
+     * flat contact (q = 1, F h / 2), a corner (q = 2, F h / 3) and two round outlines (3/2) */
+    const double h = g.thick > 0 ? g.thick : depth;
+    p->elastic = fel * h * g.area / (g.area + width * h) + (kt > 0 ? 0.5 * fs * fs / kt : 0);
     /* dissipation = work the dashpots take out of the bodies during this step */
     w->e_damped += (-fda * vn - fd * vt - mda * wrel) * dt;
 

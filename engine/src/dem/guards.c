@@ -1,4 +1,5 @@
-/* Stability guards: stop a run that goes unstable with a message naming what, where, when,
+/* Bodies are numbered from 1 in messages, as scenes number them (the C API indexes from 0).
+ * Stability guards: stop a run that goes unstable with a message naming what, where, when,
  * the likely cause and the time step that would be safe. Checked after each step:
  *   - non-finite position or velocity of a dynamic body,
  *   - an overlap beyond max_overlap_ratio of the smaller radius,
@@ -26,7 +27,7 @@ static void advice(pl_world *w, char *buf, size_t len) {
         snprintf(buf, len,
                  "likely cause: the time step %.3g s is %.2g times the critical step %.3g s (body %d, %s); "
                  "a safe step is %.3g s (set dt = 0 for automatic, or dt <= %.3g)",
-                 dt, dt / r.dt_critical, r.dt_critical, r.limiting_body, r.limit_kind, 0.1 * r.dt_critical,
+                 dt, dt / r.dt_critical, r.dt_critical, r.limiting_body + 1, r.limit_kind, 0.1 * r.dt_critical,
                  0.1 * r.dt_critical);
     else
         snprintf(buf, len,
@@ -45,7 +46,7 @@ pl_status pl__check_guards(pl_world *w) {
             return pl__error(w, PL_ERR_UNSTABLE,
                              "unstable: body %d (%s, material '%s') has a non-finite position or velocity at "
                              "t = %.6g s (step %lld); %s",
-                             i, shape_name(w->shape[i]), w->materials[w->material[i]].name, w->time,
+                             i + 1, shape_name(w->shape[i]), w->materials[w->material[i]].name, w->time,
                              (long long)w->step, adv);
         }
     }
@@ -55,7 +56,7 @@ pl_status pl__check_guards(pl_world *w) {
         return pl__error(w, PL_ERR_UNSTABLE,
                          "unstable: bodies %d (%s) and %d (%s) overlap by %.0f%% of the smaller radius at t = %.6g s "
                          "(step %lld, limit %.0f%%) near (%.4g, %.4g); %s",
-                         a, shape_name(w->shape[a]), b, shape_name(w->shape[b]), 100 * w->worst_overlap_ratio, w->time,
+                         a + 1, shape_name(w->shape[a]), b + 1, shape_name(w->shape[b]), 100 * w->worst_overlap_ratio, w->time,
                          (long long)w->step, 100 * w->def.max_overlap_ratio, w->pos[b].x, w->pos[b].y, adv);
     }
     if (w->step % 50 == 0) {
@@ -78,7 +79,7 @@ pl_status pl__check_guards(pl_world *w) {
             return pl__error(w, PL_ERR_UNSTABLE,
                              "unstable: kinetic energy %.4g J exceeds %.0f times the energy supplied (%.4g J) at "
                              "t = %.6g s (step %lld); most energetic body %d at (%.4g, %.4g); %s",
-                             ke, w->def.energy_surge_ratio, supply, w->time, (long long)w->step, worst,
+                             ke, w->def.energy_surge_ratio, supply, w->time, (long long)w->step, worst + 1,
                              worst >= 0 ? w->pos[worst].x : 0, worst >= 0 ? w->pos[worst].y : 0, adv);
         }
     }

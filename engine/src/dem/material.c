@@ -156,6 +156,7 @@ void pl__update_pair_params(pl_world *w) {
             else
                 p.restitution = b->restitution;
             p.zeta = p.restitution >= 0 ? zeta_from_restitution(p.restitution) : -1;
+            p.inv_ks = p.ks > 0 ? 1.0 / p.ks : 0;
             w->pair_params[i * n + j] = p;
         }
     }

@@ -11,6 +11,7 @@
 /* Material-pair parameters after combination rules and overrides. */
 typedef struct pl_pair_params {
     double kn, ks;      /* N/m */
+    double inv_ks;      /* 1/ks (0 when ks = 0), for the shear spring energy */
     double friction;    /* mu */
     double cohesion;    /* N */
     double cn, cs;      /* N s/m, used when restitution < 0 */

@@ -143,77 +143,103 @@ static void circle_coeffs(const struct pl_fluid *f, int e, pl_vec2 c, double r, 
     *ga = r * rg * (gy - (grav ? f->par.up.y : 0));
 }
 
+/* Closed-form force of p = al + be cos + ga sin on the arc a0..a1 of a circle of radius r,
+   positive part only (the arc is cut where p changes sign). */
+static void arc_force(double r, double al, double be, double ga, double a0, double a1, double *Fx, double *Fy) {
+    double cut[4] = {a0, a1, a1, a1};
+    int nc = 2;
+    double R = hypot(be, ga);
+    if (R > 0 && fabs(al) < R) {
+        double phi = atan2(ga, be), w = acos(-al / R);
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double z = phi + sgn * w; /* bring into (a0, a1) if it falls there */
+            z -= 2 * PL_FL_PI * floor((z - a0) / (2 * PL_FL_PI));
+            if (z > a0 && z < a1) cut[nc++] = z;
+        }
+        if (nc == 4 && cut[2] > cut[3]) { double t = cut[2]; cut[2] = cut[3]; cut[3] = t; }
+        if (nc >= 3) { double t = cut[1]; for (int k = 1; k < nc - 1; k++) cut[k] = cut[k + 1]; cut[nc - 1] = t; }
+    }
+    for (int k = 0; k + 1 < nc; k++) {
+        double b0 = cut[k], b1 = cut[k + 1];
+        if (b1 <= b0) continue;
+        double bm = 0.5 * (b0 + b1);
+        if (al + be * cos(bm) + ga * sin(bm) <= 0) continue; /* dry arc */
+        double s0 = sin(b0), s1 = sin(b1), c0 = cos(b0), c1 = cos(b1);
+        double Icc = 0.5 * (b1 - b0) + 0.25 * (sin(2 * b1) - sin(2 * b0));
+        double Iss = 0.5 * (b1 - b0) - 0.25 * (sin(2 * b1) - sin(2 * b0));
+        double Isc = 0.5 * (s1 * s1 - s0 * s0);
+        *Fx -= r * (al * (s1 - s0) + be * Icc + ga * Isc);
+        *Fy -= r * (al * (c0 - c1) + be * Isc + ga * Iss);
+    }
+}
+
+/* Arcs of the circle inside triangle e: the intersection of the three half-planes, each an
+   arc interval of the angle; returns the number of arcs (at most 3) written to arcs. */
+static int circle_in_triangle(const pl_fl_mesh *m, int e, pl_vec2 c, double r, double arcs[][2]) {
+    const int32_t *v = &m->tri[3 * e];
+    /* current set as intervals in [0, 2 pi) */
+    double cur[6][2];
+    int n = 1;
+    cur[0][0] = 0;
+    cur[0][1] = 2 * PL_FL_PI;
+    for (int k = 0; k < 3 && n > 0; k++) {
+        pl_vec2 P = m->xy[v[k]], Q = m->xy[v[(k + 1) % 3]];
+        double ex = Q.x - P.x, ey = Q.y - P.y, L = hypot(ex, ey);
+        double d0 = ex * (c.y - P.y) - ey * (c.x - P.x); /* cross(e, c - P) */
+        double s = -d0 / (r * L);
+        if (s <= -1) continue;          /* the whole circle is inside this half-plane */
+        if (s >= 1) return 0;           /* none of it */
+        double al = atan2(ey, ex), as = asin(s);
+        double lo = al + as, hi = al + PL_FL_PI - as; /* sin(theta - al) >= s */
+        lo -= 2 * PL_FL_PI * floor(lo / (2 * PL_FL_PI));
+        hi = lo + (PL_FL_PI - 2 * as);
+        double half[2][2];
+        int nh = 0;
+        if (hi <= 2 * PL_FL_PI) { half[0][0] = lo; half[0][1] = hi; nh = 1; }
+        else { half[0][0] = lo; half[0][1] = 2 * PL_FL_PI; half[1][0] = 0; half[1][1] = hi - 2 * PL_FL_PI; nh = 2; }
+        double next[6][2];
+        int nn = 0;
+        for (int a = 0; a < n; a++)
+            for (int b = 0; b < nh; b++) {
+                double x0 = fmax(cur[a][0], half[b][0]), x1 = fmin(cur[a][1], half[b][1]);
+                if (x1 > x0 && nn < 6) { next[nn][0] = x0; next[nn][1] = x1; nn++; }
+            }
+        n = nn;
+        for (int a = 0; a < n; a++) { cur[a][0] = next[a][0]; cur[a][1] = next[a][1]; }
+    }
+    for (int a = 0; a < n; a++) { arcs[a][0] = cur[a][0]; arcs[a][1] = cur[a][1]; }
+    return n;
+}
+
 void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *force) {
     const pl_fl_mesh *m = &f->mesh;
     pl_vec2 lo = {c.x - r, c.y - r}, hi = {c.x + r, c.y + r};
     int i0, j0, i1, j1;
     if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
-    double th[BP_CAP];
-    int nt = 0;
-    th[nt++] = 0;
-    th[nt++] = 2 * PL_FL_PI;
-    int overflow = 0;
-    for (int j = j0; j <= j1 && !overflow; j++)
-        for (int i = i0; i <= i1 && !overflow; i++) {
+    double Fx = 0, Fy = 0;
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
             size_t cell = (size_t)j * m->gx + i;
             for (int k = m->cell_start[cell]; k < m->cell_start[cell + 1]; k++) {
                 int e = m->cell_items[k];
-                if (nt + 8 > BP_CAP) { overflow = 1; break; }
                 const int32_t *v = &m->tri[3 * e];
-                for (int q = 0; q < 3; q++) { /* circle x triangle edges */
-                    pl_vec2 a = m->xy[v[q]], b = m->xy[v[(q + 1) % 3]];
-                    pl_vec2 d = {b.x - a.x, b.y - a.y}, ac = {a.x - c.x, a.y - c.y};
-                    double A = d.x * d.x + d.y * d.y, B = ac.x * d.x + ac.y * d.y;
-                    double C = ac.x * ac.x + ac.y * ac.y - r * r, disc = B * B - A * C;
-                    if (A <= 0 || disc < 0) continue;
-                    double sq = sqrt(disc);
-                    for (int sgn = -1; sgn <= 1; sgn += 2) {
-                        double t = (-B + sgn * sq) / A;
-                        if (t < 0 || t > 1) continue;
-                        double ang = atan2(ac.y + t * d.y, ac.x + t * d.x);
-                        th[nt++] = ang < 0 ? ang + 2 * PL_FL_PI : ang;
-                    }
-                }
-                double al, be, ga; /* zero-pressure crossings inside this element's field */
+                pl_vec2 a = m->xy[v[0]], b = m->xy[v[1]], d = m->xy[v[2]];
+                pl_vec2 tlo = {fmin(a.x, fmin(b.x, d.x)), fmin(a.y, fmin(b.y, d.y))};
+                pl_vec2 thi = {fmax(a.x, fmax(b.x, d.x)), fmax(a.y, fmax(b.y, d.y))};
+                if (thi.x < lo.x || tlo.x > hi.x || thi.y < lo.y || tlo.y > hi.y) continue;
+                /* a triangle is listed in every cell its box overlaps: handle it only in the
+                   first of those cells inside the scanned range */
+                int ti0, tj0, ti1, tj1;
+                pl_fl_grid_range(m, tlo, thi, &ti0, &tj0, &ti1, &tj1);
+                if (i != (ti0 > i0 ? ti0 : i0) || j != (tj0 > j0 ? tj0 : j0)) continue;
+                double arcs[6][2];
+                int na = circle_in_triangle(m, e, c, r, arcs);
+                if (na == 0) continue;
+                double al, be, ga;
                 circle_coeffs(f, e, c, r, &al, &be, &ga);
-                double R = hypot(be, ga);
-                if (R > 0 && fabs(al) <= R) {
-                    double phi = atan2(ga, be), w = acos(-al / R);
-                    for (int sgn = -1; sgn <= 1; sgn += 2) {
-                        double ang = fmod(phi + sgn * w + 4 * PL_FL_PI, 2 * PL_FL_PI);
-                        th[nt++] = ang;
-                    }
-                }
+                for (int q = 0; q < na; q++) arc_force(r, al, be, ga, arcs[q][0], arcs[q][1], &Fx, &Fy);
             }
         }
-    if (overflow) {
-        /* too many elements under the disc for the exact arc list: integrate with a fine
-           polygonal outline instead (error O((2 pi / 512)^2)) */
-        pl_vec2 poly[512];
-        for (int k = 0; k < 512; k++)
-            poly[k] = (pl_vec2){c.x + r * cos(2 * PL_FL_PI * k / 512), c.y + r * sin(2 * PL_FL_PI * k / 512)};
-        double M = 0;
-        pl_fl_polygon_force(f, poly, 512, c, force, &M);
-        return;
-    }
-    qsort(th, (size_t)nt, sizeof(double), cmp_d);
-    double Fx = 0, Fy = 0;
-    for (int k = 0; k + 1 < nt; k++) {
-        double a0 = th[k], a1 = th[k + 1];
-        if (a1 - a0 <= 1e-14) continue;
-        double am = 0.5 * (a0 + a1);
-        int e = pl_fl_locate(m, (pl_vec2){c.x + r * cos(am), c.y + r * sin(am)});
-        if (e < 0) continue;
-        double al, be, ga;
-        circle_coeffs(f, e, c, r, &al, &be, &ga);
-        if (al + be * cos(am) + ga * sin(am) <= 0) continue; /* dry arc */
-        double s0 = sin(a0), s1 = sin(a1), c0 = cos(a0), c1 = cos(a1);
-        double Icc = 0.5 * (a1 - a0) + 0.25 * (sin(2 * a1) - sin(2 * a0));
-        double Iss = 0.5 * (a1 - a0) - 0.25 * (sin(2 * a1) - sin(2 * a0));
-        double Isc = 0.5 * (s1 * s1 - s0 * s0);
-        Fx -= r * (al * (s1 - s0) + be * Icc + ga * Isc);
-        Fy -= r * (al * (c0 - c1) + be * Isc + ga * Iss);
-    }
     force->x += Fx;
     force->y += Fy;
 }

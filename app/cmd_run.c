@@ -1,0 +1,239 @@
+/* porelab run SCENE.lua: steps a declarative scene, writes frames, calls its hooks between
+ * steps, prints a summary; runs an imperative script and reports how it ended. */
+#include "cli_common.h"
+#include "commands.h"
+#include "progress.h"
+#include "report.h"
+#include "run_plan.h"
+#include "render/drawlist.h"
+
+#include <limits.h>
+#include <stdio.h>
+#include <string.h>
+
+static const pl_opt_spec run_specs[] = {
+    {"--out", NULL, "DIR", "output folder (default out/<scene-name>/)"},
+    {"--until", NULL, "T", "simulated end time, s"},
+    {"--steps", NULL, "N", "number of steps to take"},
+    {"--fps", NULL, "F", "frames per simulated second (default: the scene's, else 30)"},
+    {"--every", NULL, "N", "one frame every N steps"},
+    {"--size", NULL, "WxH", "frame size in pixels (default: the scene's, else 800x600)"},
+    {"--layers", NULL, "LIST", "layers to draw, e.g. bodies,forces,time or +mesh,-time"},
+    {"--video", NULL, "FILE", "also encode the frames into FILE (.mp4 or .gif) with ffmpeg"},
+    {"--quiet", "-q", NULL, "no progress bar and no summary"},
+    {"--trust", NULL, NULL, "lift the sandbox (only for scenes you trust)"},
+    {"--hash", NULL, NULL, "print the final state hash as 'state-hash: <16 hex digits>'"},
+    {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
+    {NULL, NULL, NULL, NULL}};
+
+static const pl_command_help run_help = {
+    "run", "SCENE.lua [options]",
+    "Runs a scene. A declarative scene (one that returns its world) is stepped by porelab,\n"
+    "which writes DIR/frame_000000.png ... and calls the scene's on_frame hook after each\n"
+    "frame. An imperative script steps itself; porelab exits non-zero if it raises an error.\n"
+    "The run length comes from --until/--steps, else the scene's run table, else the flag\n"
+    "TIMESTEPS, else 1 s; the frame interval from --fps/--every, else the scene, else the\n"
+    "flag PRINT_INT, else 30 frames per second.",
+    run_specs};
+
+typedef struct run_ctx {
+    const pl_opts *o;
+    pl_scene *s;
+    pl_world *w;
+    const pl_run_plan *plan;
+    pl_render_options *ropt;
+    pl_draw_list *overlay;
+    const char *out_dir;
+    pl_frame_writer *fw;
+    long long start_step;
+    double last_frame_time;
+} run_ctx;
+
+static long long steps_done(const run_ctx *c)
+{
+    return (long long)pl_world_step_count(c->w) - c->start_step;
+}
+
+static void print_stop(const run_ctx *c, const char *why)
+{
+    fprintf(stderr, "porelab: run stopped at t = %.6g s (step %lld of %lld): %s\n",
+            pl_world_time(c->w), steps_done(c), c->plan->total_steps, why);
+    int n = c->fw ? pl_frame_writer_count(c->fw) : 0;
+    if (n > 0)
+        fprintf(stderr, "porelab: %d frame%s kept in %s/ (the last at t = %.6g s)\n", n,
+                n == 1 ? "" : "s", c->out_dir, c->last_frame_time);
+    else
+        fprintf(stderr, "porelab: no frames were written\n");
+}
+
+/* Writes the next frame and calls on_frame; 0 or -1 (after reporting). */
+static int frame(run_ctx *c)
+{
+    char err[1024];
+    long long index = pl_frame_writer_count(c->fw);
+    if (pl_cli_overlay(c->o, c->s, c->overlay, c->ropt) != 0) {
+        print_stop(c, "the scene's render.overlay raised an error (above)");
+        return -1;
+    }
+    if (pl_frame_writer_add(c->fw, c->w, c->ropt, err, sizeof err) != 0) {
+        print_stop(c, err);
+        return -1;
+    }
+    c->last_frame_time = pl_world_time(c->w);
+    if (pl_scene_call_hook(c->s, "on_frame", index) != 0) {
+        pl_cli_print_scene_error(c->o, c->s);
+        print_stop(c, "the scene's on_frame hook raised an error (above)");
+        return -1;
+    }
+    return 0;
+}
+
+static int step_loop(run_ctx *c, pl_progress *prog)
+{
+    const pl_run_plan *p = c->plan;
+    double t_end = p->t_start + (double)p->total_steps * p->dt;
+    long long chunk = 16, k = 1;
+    long long next = pl_run_plan_frame_step(p, k);
+    if (frame(c) != 0) return -1;
+    while (steps_done(c) < p->total_steps) {
+        long long target = next < p->total_steps ? next : p->total_steps;
+        long long n = target - steps_done(c);
+        if (prog->enabled && n > chunk) n = chunk;
+        if (n > INT_MAX) n = INT_MAX;
+        if (n > 0) {
+            double t0 = pl_wall_seconds();
+            pl_status st = pl_world_step(c->w, (int)n);
+            if (st != PL_OK) {
+                pl_progress_finish(prog);
+                print_stop(c, pl_world_last_error(c->w));
+                return -1;
+            }
+            double spent = pl_wall_seconds() - t0;
+            if (prog->enabled) { /* aim at ~10 redraws per second */
+                chunk = spent > 0 ? (long long)(0.1 * (double)n / spent) : chunk * 2;
+                if (chunk < 1) chunk = 1;
+                if (chunk > 1000000) chunk = 1000000;
+            }
+            pl_progress_update(prog, steps_done(c), pl_world_time(c->w), t_end);
+        }
+        /* >= rather than ==: a hook may have stepped the world itself. */
+        if (steps_done(c) >= next) {
+            if (frame(c) != 0) {
+                pl_progress_finish(prog);
+                return -1;
+            }
+            while (pl_run_plan_frame_step(p, k) <= steps_done(c)) k++;
+            next = pl_run_plan_frame_step(p, k);
+        }
+    }
+    pl_progress_finish(prog);
+    if (pl_scene_call_hook(c->s, "on_finish", 0) != 0) {
+        pl_cli_print_scene_error(c->o, c->s);
+        print_stop(c, "the scene's on_finish hook raised an error (above)");
+        return -1;
+    }
+    return 0;
+}
+
+static void print_summary(const run_ctx *c, double wall)
+{
+    const pl_run_plan *p = c->plan;
+    long long n = steps_done(c);
+    printf("porelab: finished %s\n", pl_scene_path(c->s));
+    printf("  %-15s%lld of dt = %.6g s, t = %.6g -> %.6g s (length from %s)\n", "steps", n,
+           p->dt, p->t_start, pl_world_time(c->w), p->length_from);
+    printf("  %-15s%.3g s (%.0f steps/s)\n", "wall time", wall, wall > 0 ? (double)n / wall : 0);
+    pl_report_bodies(stdout, c->w);
+    printf("  %-15s%d\n", "contacts", pl_world_contact_count(c->w));
+    pl_report_energy(stdout, c->w);
+    int frames = pl_frame_writer_count(c->fw);
+    char interval[64];
+    if (p->every > 0)
+        snprintf(interval, sizeof interval, "every %lld steps", p->every);
+    else
+        snprintf(interval, sizeof interval, "%g per simulated second", p->fps);
+    printf("  %-15s%d in %s/ (frame_000000.png .. frame_%06d.png; %s, from %s)\n", "frames",
+           frames, c->out_dir, frames > 0 ? frames - 1 : 0, interval, p->frames_from);
+}
+
+static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
+{
+    pl_world *w = pl_scene_world(s);
+    pl_render_options ropt;
+    if (pl_cli_render_options(o, s, w, &ropt) != 0) return PL_EXIT_FAIL;
+    pl_run_plan plan;
+    int rc = pl_run_plan_make(o, s, w, &plan);
+    if (rc) return rc;
+    pl_draw_list overlay;
+    pl_draw_list_init(&overlay);
+    run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL,
+                 (long long)pl_world_step_count(w), 0};
+    char err[1024];
+    const char *video = pl_opts_get(o, "--video");
+    c.fw = pl_frame_writer_open(out_dir, video, pl_run_plan_video_fps(&plan), err, sizeof err);
+    if (!c.fw) {
+        fprintf(stderr, "porelab: cannot write frames to %s/: %s\n", out_dir, err);
+        pl_draw_list_free(&overlay);
+        return PL_EXIT_FAIL;
+    }
+    int quiet = pl_opts_has(o, "--quiet");
+    pl_progress prog;
+    pl_progress_start(&prog, plan.total_steps, quiet);
+    rc = step_loop(&c, &prog) == 0 ? PL_EXIT_OK : PL_EXIT_FAIL;
+    double wall = pl_wall_seconds() - prog.wall_start;
+    int frames = pl_frame_writer_count(c.fw);
+    if (rc == PL_EXIT_OK && !quiet) print_summary(&c, wall);
+    if (pl_frame_writer_close(&c.fw, err, sizeof err) != 0) {
+        fprintf(stderr, "porelab: video: %s (the %d frames remain in %s/)\n", err, frames,
+                out_dir);
+        rc = PL_EXIT_FAIL;
+    } else if (video && rc == PL_EXIT_OK && !quiet) {
+        printf("  %-15s%s\n", "video", video);
+    }
+    if (pl_opts_has(o, "--hash")) pl_cli_print_hash(w);
+    pl_draw_list_free(&overlay);
+    return rc;
+}
+
+static int run_imperative(const pl_opts *o, pl_scene *s)
+{
+    static const char *const ignored[] = {"--until", "--steps", "--fps", "--every", "--video",
+                                          "--size", "--layers", NULL};
+    for (int i = 0; ignored[i]; i++)
+        if (pl_opts_has(o, ignored[i]))
+            fprintf(stderr, "porelab run: note: %s is an imperative script (it returns no "
+                            "world), so %s does not apply\n", pl_scene_path(s), ignored[i]);
+    pl_world *w = pl_scene_world(s);
+    if (!pl_opts_has(o, "--quiet")) {
+        printf("porelab: %s ran to completion (imperative script)\n", pl_scene_path(s));
+        if (w) {
+            printf("  %-15s%lld, t = %.6g s\n", "steps", (long long)pl_world_step_count(w),
+                   pl_world_time(w));
+            pl_report_bodies(stdout, w);
+            printf("  %-15s%d\n", "contacts", pl_world_contact_count(w));
+            pl_report_energy(stdout, w);
+        }
+    }
+    if (pl_opts_has(o, "--hash") && w) pl_cli_print_hash(w);
+    return PL_EXIT_OK;
+}
+
+int pl_cmd_run(int argc, char **argv)
+{
+    pl_opts o;
+    int rc = pl_opts_parse(&o, &run_help, argc, argv, 1);
+    if (rc >= 0) return rc;
+    if (pl_cli_require_scene(&o) != 0) return PL_EXIT_USAGE;
+    char out_dir[PATH_MAX];
+    if (pl_opts_has(&o, "--out"))
+        snprintf(out_dir, sizeof out_dir, "%s", pl_opts_get(&o, "--out"));
+    else
+        pl_cli_default_out(o.positional[0], out_dir, sizeof out_dir);
+    size_t len = strlen(out_dir);
+    while (len > 1 && out_dir[len - 1] == '/') out_dir[--len] = '\0';
+    pl_scene *s = pl_cli_load_scene(&o, out_dir);
+    if (!s) return PL_EXIT_FAIL;
+    rc = pl_scene_declarative(s) ? run_declarative(&o, s, out_dir) : run_imperative(&o, s);
+    pl_scene_destroy(&s);
+    return rc;
+}

@@ -1,0 +1,11 @@
+/* The porelab commands; each takes the arguments after its name and returns the exit
+ * code (options.h). */
+#ifndef PL_APP_COMMANDS_H
+#define PL_APP_COMMANDS_H
+
+int pl_cmd_run(int argc, char **argv);
+int pl_cmd_still(int argc, char **argv);
+int pl_cmd_info(int argc, char **argv);
+int pl_cmd_flags(int argc, char **argv);
+
+#endif

@@ -1,0 +1,52 @@
+/* porelab: a 2D lab where grains and the water in their pores move together. */
+#include "commands.h"
+#include "options.h"
+#include "porelab/core.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static const struct {
+    const char *name;
+    int (*fn)(int, char **);
+    const char *summary;
+} commands[] = {
+    {"run", pl_cmd_run, "run a scene and write PNG frames (and a video)"},
+    {"still", pl_cmd_still, "draw one figure of a scene at a time T (PNG, SVG or PDF)"},
+    {"info", pl_cmd_info, "describe a scene: bodies, materials, contact law, time step, flags"},
+    {"flags", pl_cmd_flags, "list the MIMES flags with units, ranges and whether they are built"},
+};
+#define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: porelab COMMAND [options]   (porelab COMMAND --help for details)\n\n"
+               "commands:\n");
+    for (int i = 0; i < NCOMMANDS; i++)
+        fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
+    fprintf(f, "\nother options:\n  --version  print the version\n  --help     show this help\n"
+               "\nexample: porelab run scenes/demo.lua   (frames go to out/demo/)\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return PL_EXIT_USAGE;
+    }
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
+        usage(stdout);
+        return PL_EXIT_OK;
+    }
+    if (strcmp(cmd, "--version") == 0) {
+        printf("porelab %s\n", PL_VERSION_STRING);
+        return PL_EXIT_OK;
+    }
+    for (int i = 0; i < NCOMMANDS; i++)
+        if (strcmp(cmd, commands[i].name) == 0) return commands[i].fn(argc - 2, argv + 2);
+    fprintf(stderr, "porelab: unknown command '%s'; valid commands:", cmd);
+    for (int i = 0; i < NCOMMANDS; i++) fprintf(stderr, " %s", commands[i].name);
+    fprintf(stderr, " (and --help, --version)\n");
+    return PL_EXIT_USAGE;
+}

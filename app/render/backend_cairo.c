@@ -1,0 +1,358 @@
+/* cairo backend: draw list -> cairo context. */
+#define _POSIX_C_SOURCE 200809L
+#include "backend_cairo.h"
+
+#include <cairo-ft.h>
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+/* ------------------------------------------------------------------- font */
+
+static pthread_once_t font_once = PTHREAD_ONCE_INIT;
+static cairo_font_face_t *font_face;
+static char font_error[256];
+
+static void load_font(void) {
+    FT_Library lib;
+    FT_Face face;
+    if (FT_Init_FreeType(&lib)) {
+        snprintf(font_error, sizeof font_error, "FreeType could not be initialised");
+        return;
+    }
+    if (FT_New_Face(lib, PL_FONT_PATH, 0, &face)) {
+        snprintf(font_error, sizeof font_error,
+                 "cannot load the font %s (install the Debian package fonts-dejavu-core)",
+                 PL_FONT_PATH);
+        FT_Done_FreeType(lib);
+        return;
+    }
+    /* No hinting: glyph outlines independent of the FreeType hinting engine. The face and
+     * library live for the whole process (the font face is shared by all renders). */
+    font_face = cairo_ft_font_face_create_for_ft_face(face, FT_LOAD_NO_HINTING);
+    if (cairo_font_face_status(font_face) != CAIRO_STATUS_SUCCESS) {
+        snprintf(font_error, sizeof font_error, "cairo could not use the font %s", PL_FONT_PATH);
+        font_face = NULL;
+    }
+}
+
+cairo_font_face_t *pl_cairo_font_face(char *err, size_t errlen) {
+    pthread_once(&font_once, load_font);
+    if (!font_face && err && errlen) snprintf(err, errlen, "%s", font_error);
+    return font_face;
+}
+
+/* ------------------------------------------------------------------ drawing */
+
+static void set_color(cairo_t *cr, pl_rgba c) {
+    cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
+}
+
+static void path_points(cairo_t *cr, const pl_draw_list *dl, const pl_prim *p, int closed) {
+    const pl_vec2 *pts = dl->points + p->first;
+    for (int i = 0; i < p->count; i++) {
+        pl_vec2 q = pl_dl_px(dl, p, pts[i]);
+        if (i == 0) cairo_move_to(cr, q.x, q.y);
+        else cairo_line_to(cr, q.x, q.y);
+    }
+    if (closed) cairo_close_path(cr);
+}
+
+static void fill_stroke(cairo_t *cr, const pl_prim *p) {
+    if (p->has_fill) {
+        set_color(cr, p->fill);
+        if (p->has_stroke) cairo_fill_preserve(cr);
+        else cairo_fill(cr);
+    }
+    if (p->has_stroke) {
+        set_color(cr, p->stroke);
+        cairo_set_line_width(cr, p->width);
+        cairo_stroke(cr);
+    }
+    cairo_new_path(cr);
+}
+
+static void draw_triangles(cairo_t *cr, const pl_draw_list *dl, const pl_prim *p) {
+    int nt = p->count / 3;
+    if (nt <= 0) return;
+    cairo_pattern_t *mesh = cairo_pattern_create_mesh();
+    const pl_vec2 *pts = dl->points + p->first;
+    const pl_rgba *col = dl->colors + p->color_first;
+    for (int t = 0; t < nt; t++) {
+        cairo_mesh_pattern_begin_patch(mesh);
+        for (int k = 0; k < 3; k++) {
+            pl_vec2 q = pl_dl_px(dl, p, pts[3 * t + k]);
+            if (k == 0) cairo_mesh_pattern_move_to(mesh, q.x, q.y);
+            else cairo_mesh_pattern_line_to(mesh, q.x, q.y);
+        }
+        for (int k = 0; k < 3; k++) {
+            pl_rgba c = col[3 * t + k];
+            cairo_mesh_pattern_set_corner_color_rgba(mesh, (unsigned)k, c.r, c.g, c.b, c.a);
+        }
+        cairo_mesh_pattern_end_patch(mesh);
+    }
+    cairo_set_source(cr, mesh);
+    cairo_paint(cr);
+    cairo_pattern_destroy(mesh);
+}
+
+static void draw_arrow(cairo_t *cr, const pl_draw_list *dl, const pl_prim *p) {
+    pl_vec2 a = pl_dl_px(dl, p, dl->points[p->first]);
+    pl_vec2 b = pl_dl_px(dl, p, dl->points[p->first + 1]);
+    double dx = b.x - a.x, dy = b.y - a.y, len = sqrt(dx * dx + dy * dy);
+    if (!(len > 0.0)) return;
+    double ux = dx / len, uy = dy / len;
+    double head = p->size;
+    if (head > 0.6 * len) head = 0.6 * len;
+    double half = 0.42 * head;
+    if (half < 0.5 * p->width) half = 0.5 * p->width;
+    double bx = b.x - ux * head, by = b.y - uy * head;
+    set_color(cr, p->stroke);
+    cairo_set_line_width(cr, p->width);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    cairo_move_to(cr, a.x, a.y);
+    cairo_line_to(cr, bx + ux * 0.5, by + uy * 0.5);
+    cairo_stroke(cr);
+    cairo_move_to(cr, b.x, b.y);
+    cairo_line_to(cr, bx - uy * half, by + ux * half);
+    cairo_line_to(cr, bx + uy * half, by - ux * half);
+    cairo_close_path(cr);
+    set_color(cr, p->fill);
+    cairo_fill(cr);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+}
+
+static void draw_text(cairo_t *cr, const pl_draw_list *dl, const pl_prim *p) {
+    const char *s = dl->text + p->text;
+    pl_vec2 at = pl_dl_px(dl, p, dl->points[p->first]);
+    cairo_set_font_size(cr, p->size);
+    cairo_text_extents_t te;
+    cairo_font_extents_t fe;
+    cairo_text_extents(cr, s, &te);
+    cairo_font_extents(cr, &fe);
+    double x = 0.0, y = 0.0;
+    switch (PL_ANCHOR_H(p->anchor)) {
+    case PL_ANCHOR_CENTER: x = -0.5 * te.x_advance; break;
+    case PL_ANCHOR_RIGHT: x = -te.x_advance; break;
+    default: x = 0.0; break;
+    }
+    /* Vertical anchors use the cap height of DejaVu Sans (0.73 em) rather than ink extents,
+     * so labels of different strings line up. */
+    double cap = 0.729 * p->size;
+    switch (PL_ANCHOR_V(p->anchor)) {
+    case PL_ANCHOR_TOP: y = cap; break;
+    case PL_ANCHOR_MIDDLE: y = 0.5 * cap; break;
+    case PL_ANCHOR_BOTTOM: y = -fe.descent; break;
+    default: y = 0.0; break;
+    }
+    cairo_save(cr);
+    cairo_translate(cr, at.x, at.y);
+    if (p->angle != 0.0f) cairo_rotate(cr, -p->angle);
+    cairo_move_to(cr, x, y);
+    cairo_text_path(cr, s);
+    if (p->has_halo) {
+        set_color(cr, p->stroke);
+        cairo_set_line_width(cr, 0.22 * p->size);
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        cairo_stroke_preserve(cr);
+    }
+    set_color(cr, p->fill);
+    cairo_fill(cr);
+    cairo_restore(cr);
+}
+
+int pl_cairo_draw(cairo_t *cr, const pl_draw_list *dl, char *err, size_t errlen) {
+    if (dl->failed) {
+        snprintf(err, errlen, "the draw list is incomplete (out of memory while building it)");
+        return -1;
+    }
+    int has_text = 0;
+    for (int i = 0; i < dl->prim_count && !has_text; i++)
+        has_text = dl->prims[i].kind == PL_PRIM_TEXT;
+    if (has_text) {
+        cairo_font_face_t *ff = pl_cairo_font_face(err, errlen);
+        if (!ff) return -1;
+        cairo_set_font_face(cr, ff);
+        cairo_font_options_t *fo = cairo_font_options_create();
+        cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
+        cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+        cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+        cairo_font_options_set_subpixel_order(fo, CAIRO_SUBPIXEL_ORDER_DEFAULT);
+        cairo_set_font_options(cr, fo);
+        cairo_font_options_destroy(fo);
+    }
+    cairo_save(cr);
+    cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+    set_color(cr, dl->background);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    const double two_pi = 6.283185307179586;
+    for (int i = 0; i < dl->prim_count; i++) {
+        const pl_prim *p = &dl->prims[i];
+        switch (p->kind) {
+        case PL_PRIM_CIRCLE: {
+            pl_vec2 c = pl_dl_px(dl, p, dl->points[p->first]);
+            double r = pl_dl_px_radius(dl, p);
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, c.x, c.y, r, 0.0, two_pi);
+            fill_stroke(cr, p);
+            break;
+        }
+        case PL_PRIM_POLYGON:
+            path_points(cr, dl, p, 1);
+            fill_stroke(cr, p);
+            break;
+        case PL_PRIM_POLYLINE:
+            path_points(cr, dl, p, 0);
+            set_color(cr, p->stroke);
+            cairo_set_line_width(cr, p->width);
+            cairo_stroke(cr);
+            break;
+        case PL_PRIM_SEGMENTS: {
+            const pl_vec2 *pts = dl->points + p->first;
+            for (int k = 0; k + 1 < p->count; k += 2) {
+                pl_vec2 a = pl_dl_px(dl, p, pts[k]), b = pl_dl_px(dl, p, pts[k + 1]);
+                cairo_move_to(cr, a.x, a.y);
+                cairo_line_to(cr, b.x, b.y);
+            }
+            set_color(cr, p->stroke);
+            cairo_set_line_width(cr, p->width);
+            cairo_stroke(cr);
+            break;
+        }
+        case PL_PRIM_TRIANGLES: draw_triangles(cr, dl, p); break;
+        case PL_PRIM_ARROW: draw_arrow(cr, dl, p); break;
+        case PL_PRIM_TEXT: draw_text(cr, dl, p); break;
+        default: break;
+        }
+    }
+    cairo_status_t st = cairo_status(cr);
+    if (st != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, errlen, "cairo: %s", cairo_status_to_string(st));
+        return -1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------- images */
+
+void pl_image_free(pl_image *img) {
+    free(img->rgba);
+    img->rgba = NULL;
+    img->width = img->height = 0;
+}
+
+int pl_cairo_rasterize(const pl_draw_list *dl, pl_image *img, char *err, size_t errlen) {
+    int w = dl->camera.width, h = dl->camera.height;
+    if (w <= 0 || h <= 0 || w > 32768 || h > 32768) {
+        snprintf(err, errlen, "image size %dx%d is out of range (1..32768)", w, h);
+        return -1;
+    }
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, errlen, "cannot create a %dx%d image: %s", w, h,
+                 cairo_status_to_string(cairo_surface_status(s)));
+        cairo_surface_destroy(s);
+        return -1;
+    }
+    cairo_t *cr = cairo_create(s);
+    int rc = pl_cairo_draw(cr, dl, err, errlen);
+    cairo_destroy(cr);
+    if (rc == 0) {
+        cairo_surface_flush(s);
+        if (!img->rgba || img->width != w || img->height != h) {
+            uint8_t *buf = realloc(img->rgba, (size_t)w * (size_t)h * 4u);
+            if (!buf) {
+                snprintf(err, errlen, "out of memory for a %dx%d image", w, h);
+                cairo_surface_destroy(s);
+                return -1;
+            }
+            img->rgba = buf;
+            img->width = w;
+            img->height = h;
+        }
+        const unsigned char *data = cairo_image_surface_get_data(s);
+        int stride = cairo_image_surface_get_stride(s);
+        for (int y = 0; y < h; y++) {
+            const uint32_t *row = (const uint32_t *)(const void *)(data + (size_t)y * (size_t)stride);
+            uint8_t *out = img->rgba + (size_t)y * (size_t)w * 4u;
+            for (int x = 0; x < w; x++) {
+                uint32_t v = row[x];
+                unsigned a = v >> 24, r = (v >> 16) & 255u, g = (v >> 8) & 255u, b = v & 255u;
+                if (a != 255u && a != 0u) { /* un-premultiply with rounding */
+                    r = (r * 255u + a / 2u) / a;
+                    g = (g * 255u + a / 2u) / a;
+                    b = (b * 255u + a / 2u) / a;
+                }
+                out[4 * x + 0] = (uint8_t)r;
+                out[4 * x + 1] = (uint8_t)g;
+                out[4 * x + 2] = (uint8_t)b;
+                out[4 * x + 3] = (uint8_t)a;
+            }
+        }
+    }
+    cairo_surface_destroy(s);
+    return rc;
+}
+
+int pl_file_format(const char *path) {
+    const char *dot = strrchr(path, '.');
+    if (!dot) return -1;
+    if (strcasecmp(dot, ".png") == 0) return 0;
+    if (strcasecmp(dot, ".svg") == 0) return 1;
+    if (strcasecmp(dot, ".pdf") == 0) return 2;
+    return -1;
+}
+
+int pl_cairo_write_file(const pl_draw_list *dl, const char *path, int png_level, char *err,
+                        size_t errlen) {
+    int fmt = pl_file_format(path);
+    if (fmt < 0) {
+        snprintf(err, errlen, "%s: unknown image format (valid extensions: .png, .svg, .pdf)", path);
+        return -1;
+    }
+    if (fmt == 0) {
+        pl_image img = {0, 0, NULL};
+        int rc = pl_cairo_rasterize(dl, &img, err, errlen);
+        if (rc == 0) rc = pl_png_write(path, &img, png_level, png_level > 1, err, errlen);
+        pl_image_free(&img);
+        return rc;
+    }
+    double w = dl->camera.width, h = dl->camera.height;
+    /* Vector surfaces: 1 pixel = 1 pt, so a 800x600 still is an 800x600 pt page. */
+    cairo_surface_t *s = fmt == 1 ? cairo_svg_surface_create(path, w, h)
+                                  : cairo_pdf_surface_create(path, w, h);
+    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, errlen, "cannot write %s: %s", path,
+                 cairo_status_to_string(cairo_surface_status(s)));
+        cairo_surface_destroy(s);
+        return -1;
+    }
+    if (fmt == 2) {
+        /* Fixed metadata so the same picture gives the same bytes. */
+        cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATOR, "porelab");
+        cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
+    }
+    cairo_t *cr = cairo_create(s);
+    int rc = pl_cairo_draw(cr, dl, err, errlen);
+    cairo_destroy(cr);
+    cairo_surface_finish(s);
+    if (rc == 0 && cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, errlen, "cannot write %s: %s", path,
+                 cairo_status_to_string(cairo_surface_status(s)));
+        rc = -1;
+    }
+    cairo_surface_destroy(s);
+    return rc;
+}

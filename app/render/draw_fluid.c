@@ -1,0 +1,208 @@
+/* Fluid layers: the Darcy mesh of porelab/fluid.h drawn with the generic field builders. */
+#include "draw_field.h"
+#include "draw_world.h"
+#include "porelab/fluid.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int reserve_fluid(pl_render_scene *s, int nodes, int tris) {
+    if (nodes > s->fluid_node_cap) {
+        pl_vec2 *n = realloc(s->fluid_nodes, (size_t)nodes * sizeof *n);
+        if (!n) return -1;
+        s->fluid_nodes = n;
+        double *v = realloc(s->fluid_values, (size_t)nodes * sizeof *v);
+        if (!v) return -1;
+        s->fluid_values = v;
+        s->fluid_node_cap = nodes;
+    }
+    if (tris > s->fluid_tri_cap) {
+        int *t = realloc(s->fluid_tris, (size_t)tris * 3u * sizeof *t);
+        if (!t) return -1;
+        s->fluid_tris = t;
+        pl_vec2 *u = realloc(s->fluid_velocity, (size_t)tris * sizeof *u);
+        if (!u) return -1;
+        s->fluid_velocity = u;
+        s->fluid_tri_cap = tris;
+    }
+    return 0;
+}
+
+int pl_render_scene_set_fluid(pl_render_scene *s, const pl_vec2 *nodes, const double *values,
+                              int node_count, const int *tris, const pl_vec2 *velocity,
+                              int tri_count, int field) {
+    s->fluid_node_count = s->fluid_tri_count = 0;
+    if (node_count <= 0 || tri_count <= 0) return 0;
+    if (reserve_fluid(s, node_count, tri_count)) return -1;
+    memcpy(s->fluid_nodes, nodes, (size_t)node_count * sizeof *nodes);
+    memcpy(s->fluid_values, values, (size_t)node_count * sizeof *values);
+    memcpy(s->fluid_tris, tris, (size_t)tri_count * 3u * sizeof *tris);
+    for (int t = 0; t < tri_count; t++) {
+        pl_vec2 z = {0.0, 0.0};
+        s->fluid_velocity[t] = velocity ? velocity[t] : z;
+    }
+    s->fluid_node_count = node_count;
+    s->fluid_tri_count = tri_count;
+    s->fluid_field = field;
+    return 0;
+}
+
+int pl_render_scene_capture_fluid(pl_render_scene *s, pl_world *w, int field) {
+    s->fluid_node_count = s->fluid_tri_count = 0;
+    s->fluid_field = field;
+    int nn = pl_world_fluid_node_count(w), nt = pl_world_fluid_triangle_count(w);
+    if (nn <= 0 || nt <= 0) return 0;
+    if (reserve_fluid(s, nn, nt)) return -1;
+    double *tmp = malloc((size_t)nt * 2u * sizeof *tmp);
+    if (!tmp) return -1;
+    nn = pl_world_fluid_copy_nodes(w, s->fluid_nodes, nn);
+    nt = pl_world_fluid_copy_triangles(w, s->fluid_tris, nt);
+    int nv = pl_world_fluid_copy_node_field(w, (pl_fluid_node_field)field, s->fluid_values, nn);
+    for (int i = nv < 0 ? 0 : nv; i < nn; i++) s->fluid_values[i] = NAN;
+    int nx = pl_world_fluid_copy_element_field(w, PL_FLUID_VELOCITY_X, tmp, nt);
+    int ny = pl_world_fluid_copy_element_field(w, PL_FLUID_VELOCITY_Y, tmp + nt, nt);
+    for (int t = 0; t < nt; t++) {
+        s->fluid_velocity[t].x = t < nx ? tmp[t] : 0.0;
+        s->fluid_velocity[t].y = t < ny ? tmp[nt + t] : 0.0;
+    }
+    free(tmp);
+    s->fluid_node_count = nn > 0 ? nn : 0;
+    s->fluid_tri_count = nt > 0 ? nt : 0;
+    return 0;
+}
+
+int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt, double *vmin,
+                         double *vmax, pl_colormap *map, char *label, size_t labellen,
+                         double *unit_factor) {
+    if (s->fluid_node_count <= 0) return 0;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < s->fluid_node_count; i++) {
+        double v = s->fluid_values[i];
+        if (!isfinite(v)) continue;
+        if (v < lo) lo = v;
+        if (v > hi) hi = v;
+    }
+    if (!isfinite(lo)) lo = hi = 0.0;
+    int field = s->fluid_field;
+    int is_pa = field == PL_FLUID_PRESSURE || field == PL_FLUID_EXCESS_PRESSURE;
+    *map = PL_CMAP_SEQUENTIAL;
+    if (field == PL_FLUID_EXCESS_PRESSURE || (lo < 0.0 && hi > 0.0 && is_pa)) {
+        double m = fmax(fabs(lo), fabs(hi));
+        lo = -m;
+        hi = m;
+        *map = PL_CMAP_DIVERGING;
+    }
+    if (opt->fluid_max > opt->fluid_min) {
+        lo = opt->fluid_min;
+        hi = opt->fluid_max;
+    }
+    if (!(hi > lo)) { /* uniform field: a small symmetric window keeps a valid bar */
+        double d = fabs(lo) > 0.0 ? 0.01 * fabs(lo) : 1.0;
+        lo -= d;
+        hi += d;
+    }
+    *vmin = lo;
+    *vmax = hi;
+    *unit_factor = 1.0;
+    const char *name = field == PL_FLUID_HEAD ? "total head"
+                       : field == PL_FLUID_PRESSURE_HEAD ? "pressure head"
+                       : field == PL_FLUID_EXCESS_PRESSURE ? "excess pore pressure"
+                                                           : "pore pressure";
+    const char *unit = "m";
+    if (is_pa) {
+        double m = fmax(fabs(lo), fabs(hi));
+        unit = "Pa";
+        if (m >= 1e6) { *unit_factor = 1e-6; unit = "MPa"; }
+        else if (m >= 1e3) { *unit_factor = 1e-3; unit = "kPa"; }
+    }
+    snprintf(label, labellen, "%s (%s)", name, unit);
+    return 1;
+}
+
+double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render_options *opt,
+                     unsigned layers) {
+    if (s->fluid_node_count <= 0 || s->fluid_tri_count <= 0) return 0.0;
+    const pl_vec2 *nodes = s->fluid_nodes;
+    const int *tris = s->fluid_tris;
+    int nt = s->fluid_tri_count;
+    double vmin, vmax, uf;
+    pl_colormap map;
+    char label[64];
+    pl_fluid_field_range(s, opt, &vmin, &vmax, &map, label, sizeof label, &uf);
+    if (layers & PL_LAYER_PRESSURE) {
+        dl->current_layer = 4;
+        pl_draw_field_fill(dl, nodes, tris, nt, s->fluid_values, map, vmin, vmax);
+    }
+    if (layers & PL_LAYER_MESH) {
+        dl->current_layer = 3;
+        pl_rgba c = {0.25f, 0.35f, 0.55f, 0.45f};
+        if (pl_draw_mesh_wire(dl, nodes, tris, nt, c, 0.6f)) dl->failed = 1;
+    }
+    if (layers & PL_LAYER_ISOLINES) {
+        dl->current_layer = 5;
+        double levels[64], step = 0.0;
+        int count = opt->isoline_count > 0 ? opt->isoline_count : 10;
+        if (count > 60) count = 60;
+        /* levels chosen in display units so labels are round numbers */
+        int nl = pl_nice_levels(vmin * uf, vmax * uf, count, levels, 64, &step);
+        for (int i = 0; i < nl; i++) levels[i] /= uf;
+        pl_isolines iso;
+        pl_isolines_init(&iso);
+        if (pl_isolines_extract(nodes, s->fluid_node_count, tris, nt, s->fluid_values, levels, nl,
+                                &iso) == 0) {
+            /* labels in display units */
+            for (int l = 0; l < iso.line_count; l++) iso.levels[l] *= uf;
+            pl_isoline_style st = pl_default_isoline_style();
+            st.label_size = 0.8f * pl_render_font_size(dl->camera.width, dl->camera.height);
+            pl_draw_isolines(dl, &iso, &st);
+        } else {
+            dl->failed = 1;
+        }
+        pl_isolines_free(&iso);
+    }
+    double vscale = 0.0;
+    if (layers & PL_LAYER_VELOCITY) {
+        dl->current_layer = 6;
+        /* arrows at element centroids; automatic scale: the fastest arrow spans 1.5 times the
+         * typical element size */
+        double vmax_v = 0.0, area = 0.0;
+        for (int t = 0; t < nt; t++) {
+            double v = hypot(s->fluid_velocity[t].x, s->fluid_velocity[t].y);
+            if (v > vmax_v) vmax_v = v;
+            const pl_vec2 *a = &nodes[tris[3 * t]], *b = &nodes[tris[3 * t + 1]], *c = &nodes[tris[3 * t + 2]];
+            area += 0.5 * fabs((b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y));
+        }
+        double h = sqrt(area / nt);
+        vscale = opt->velocity_scale > 0.0 ? opt->velocity_scale : (vmax_v > 0.0 ? 1.5 * h / vmax_v : 0.0);
+        if (vscale > 0.0) {
+            pl_vec2 *at = malloc((size_t)nt * sizeof *at);
+            if (!at) {
+                dl->failed = 1;
+                return 0.0;
+            }
+            for (int t = 0; t < nt; t++) {
+                const pl_vec2 *a = &nodes[tris[3 * t]], *b = &nodes[tris[3 * t + 1]], *c = &nodes[tris[3 * t + 2]];
+                at[t].x = (a->x + b->x + c->x) / 3.0;
+                at[t].y = (a->y + b->y + c->y) / 3.0;
+            }
+            pl_draw_arrows(dl, at, s->fluid_velocity, nt, vscale, pl_rgb(0.05, 0.12, 0.30), 1.1f, 3.0);
+            free(at);
+        }
+    }
+    return vscale;
+}
+
+void pl_draw_velocity_key(pl_draw_list *dl, pl_vec2 at, double velocity_scale, float fs) {
+    if (!(velocity_scale > 0.0)) return;
+    /* a round velocity whose arrow is about 3 font sizes long */
+    double v = pl_nice_number(3.0 * fs / (velocity_scale * dl->camera.scale), 1);
+    double px = v * velocity_scale * dl->camera.scale;
+    pl_rgba ink = pl_rgb(0.05, 0.12, 0.30);
+    pl_dl_arrow(dl, PL_SPACE_PIXEL, at, (pl_vec2){at.x + px, at.y}, ink, 1.3f, (float)fmin(0.35 * px, 10.0));
+    char buf[64];
+    snprintf(buf, sizeof buf, "%g m/s", v);
+    pl_dl_text(dl, PL_SPACE_PIXEL, (pl_vec2){at.x + px + 0.4 * fs, at.y}, buf, 0.85f * fs,
+               PL_ANCHOR_LEFT | PL_ANCHOR_MIDDLE, 0.0f, pl_rgb(0.13, 0.13, 0.15), NULL);
+}

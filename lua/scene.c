@@ -1,0 +1,276 @@
+/* Scene loader: one Lua state per scene, run under lua_pcall with a traceback handler. */
+#define _XOPEN_SOURCE 700
+#include "scene.h"
+#include "context.h"
+#include "lua_util.h"
+#include "sandbox.h"
+#include "scene_internal.h"
+#include "wrap.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+struct pl_scene {
+    lua_State *L;
+    pl_lua_context ctx;
+    int result_ref;  /* registry reference of the result table, or LUA_NOREF */
+    int world_ref;   /* registry reference of the world userdata, or LUA_NOREF */
+    int declarative;
+    char error[4096];
+    char traceback[8192];
+};
+
+void pl_scene_set_error(pl_scene *s, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(s->error, sizeof s->error, fmt, ap);
+    va_end(ap);
+}
+
+/* Message handler: keeps the message as the one-line error and the traceback apart. */
+static int message_handler(lua_State *L)
+{
+    pl_scene *s = lua_touserdata(L, lua_upvalueindex(1));
+    const char *msg = lua_tostring(L, 1);
+    if (!msg) {
+        if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING)
+            msg = lua_tostring(L, -1);
+        else
+            msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+    }
+    luaL_traceback(L, L, NULL, 1);
+    snprintf(s->traceback, sizeof s->traceback, "%s", lua_tostring(L, -1));
+    lua_pop(L, 1);
+    lua_pushstring(L, msg);
+    return 1;
+}
+
+/* 1 when msg starts with "chunk:line:" (as Lua prefixes errors raised in scene code). */
+static int has_location(const char *msg)
+{
+    const char *colon = strchr(msg, ':');
+    if (!colon || colon == msg || colon[1] < '0' || colon[1] > '9') return 0;
+    const char *p = colon + 1;
+    while (*p >= '0' && *p <= '9') p++;
+    return *p == ':';
+}
+
+/* Calls the function below nargs arguments with the handler; on error stores the message
+ * (prefixed with the scene path when it carries no location) and returns -1. */
+static int protected_call(pl_scene *s, int nargs, int nresults)
+{
+    lua_State *L = s->L;
+    int base = lua_gettop(L) - nargs;
+    lua_pushlightuserdata(L, s);
+    lua_pushcclosure(L, message_handler, 1);
+    lua_insert(L, base);
+    int rc = lua_pcall(L, nargs, nresults, base);
+    lua_remove(L, base);
+    if (rc == LUA_OK) return 0;
+    const char *msg = lua_tostring(L, -1);
+    if (!msg) msg = "unknown error";
+    if (has_location(msg))
+        pl_scene_set_error(s, "%s", msg);
+    else
+        pl_scene_set_error(s, "%s: %s", s->ctx.scene_path, msg);
+    lua_pop(L, 1);
+    return -1;
+}
+
+pl_scene *pl_scene_create(const pl_scene_options *opt)
+{
+    pl_scene *s = calloc(1, sizeof *s);
+    if (!s) return NULL;
+    s->result_ref = s->world_ref = LUA_NOREF;
+    snprintf(s->ctx.scene_path, sizeof s->ctx.scene_path, "%s", opt->path);
+    char dir[PATH_MAX];
+    pl_path_dirname(opt->path, dir, sizeof dir);
+    if (!realpath(dir, s->ctx.scene_dir)) snprintf(s->ctx.scene_dir, PATH_MAX, "%s", dir);
+    char cwd[PATH_MAX];
+    if (opt->out_dir[0] == '/' || !getcwd(cwd, sizeof cwd))
+        snprintf(s->ctx.out_dir, PATH_MAX, "%s", opt->out_dir);
+    else
+        pl_path_join(s->ctx.out_dir, PATH_MAX, cwd, opt->out_dir);
+    s->ctx.trust = opt->trust;
+    s->L = luaL_newstate();
+    if (!s->L) {
+        free(s);
+        return NULL;
+    }
+    pl_lua_set_context(s->L, &s->ctx);
+    pl_lua_open_porelab(s->L);
+    pl_lua_install_sandbox(s->L);
+    return s;
+}
+
+static const char *const result_fields[] = {"world", "render", "run", "on_frame",
+                                            "on_finish", NULL};
+
+/* Checks the scene's return value (at index 2; index 1 is the scene) and stores it. */
+static int check_result(lua_State *L)
+{
+    pl_scene *s = lua_touserdata(L, 1);
+    if (luaL_testudata(L, 2, PL_LUA_WORLD_MT)) { /* return w  ==  return {world = w} */
+        lua_createtable(L, 0, 1);
+        lua_pushvalue(L, 2);
+        lua_setfield(L, -2, "world");
+        lua_replace(L, 2);
+    }
+    if (!lua_istable(L, 2))
+        return luaL_error(L, "the scene must return nothing (imperative script), a world, or "
+                             "a table {world = ..., render = ..., run = ...} (got %s)",
+                          luaL_typename(L, 2));
+    pl_lua_check_fields(L, 2, "scene result", result_fields);
+    if (lua_getfield(L, 2, "world") == LUA_TNIL || !luaL_testudata(L, -1, PL_LUA_WORLD_MT))
+        return luaL_error(L, "scene result: world must be the world built by porelab.world "
+                             "(got %s)", luaL_typename(L, -1));
+    s->world_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    lua_pushvalue(L, 2);
+    s->result_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    s->declarative = 1;
+    return 0;
+}
+
+int pl_scene_load(pl_scene *s)
+{
+    lua_State *L = s->L;
+    FILE *f = fopen(s->ctx.scene_path, "r");
+    if (!f) {
+        pl_scene_set_error(s, "cannot open scene '%s': %s", s->ctx.scene_path,
+                           strerror(errno));
+        return -1;
+    }
+    fclose(f);
+    if (luaL_loadfilex(L, s->ctx.scene_path, "t") != LUA_OK) {
+        pl_scene_set_error(s, "%s", lua_tostring(L, -1));
+        lua_pop(L, 1);
+        return -1;
+    }
+    if (protected_call(s, 0, 1) != 0) return -1;
+    if (lua_isnil(L, -1)) { /* imperative script: describe its last world, if any */
+        lua_pop(L, 1);
+        pl_lua_scene_push_last_world(L);
+        s->world_ref = lua_isnil(L, -1) ? (lua_pop(L, 1), LUA_NOREF)
+                                        : luaL_ref(L, LUA_REGISTRYINDEX);
+        return 0;
+    }
+    lua_pushcfunction(L, check_result);
+    lua_insert(L, -2);
+    lua_pushlightuserdata(L, s);
+    lua_insert(L, -2);
+    return protected_call(s, 2, 0);
+}
+
+const char *pl_scene_error(const pl_scene *s) { return s->error; }
+const char *pl_scene_traceback(const pl_scene *s) { return s->traceback; }
+const char *pl_scene_path(const pl_scene *s) { return s->ctx.scene_path; }
+lua_State *pl_scene_lua(pl_scene *s) { return s->L; }
+int pl_scene_declarative(const pl_scene *s) { return s->declarative; }
+
+static pl_lua_world *scene_lua_world(pl_scene *s)
+{
+    if (s->world_ref == LUA_NOREF) return NULL;
+    lua_rawgeti(s->L, LUA_REGISTRYINDEX, s->world_ref);
+    pl_lua_world *lw = luaL_testudata(s->L, -1, PL_LUA_WORLD_MT);
+    lua_pop(s->L, 1);
+    return lw;
+}
+
+pl_world *pl_scene_world(pl_scene *s)
+{
+    pl_lua_world *lw = scene_lua_world(s);
+    return lw ? lw->w : NULL;
+}
+
+int pl_scene_push_result_field(pl_scene *s, const char *field)
+{
+    if (s->result_ref == LUA_NOREF) {
+        lua_pushnil(s->L);
+        return LUA_TNIL;
+    }
+    lua_rawgeti(s->L, LUA_REGISTRYINDEX, s->result_ref);
+    int t = lua_getfield(s->L, -1, field);
+    lua_remove(s->L, -2);
+    return t;
+}
+
+static const char *const run_fields[] = {"t_end", "steps", "fps", "every", NULL};
+
+static int read_run(lua_State *L)
+{
+    const char *fn = "run";
+    pl_scene_run *r = lua_touserdata(L, 1);
+    if (lua_isnil(L, 2)) return 0;
+    pl_lua_check_def(L, 2, fn);
+    pl_lua_check_fields(L, 2, fn, run_fields);
+    if (pl_lua_has_field(L, 2, "t_end") && pl_lua_has_field(L, 2, "steps"))
+        return luaL_error(L, "run: give t_end or steps, not both");
+    if (pl_lua_has_field(L, 2, "fps") && pl_lua_has_field(L, 2, "every"))
+        return luaL_error(L, "run: give fps or every, not both");
+    r->t_end = pl_lua_field_number(L, 2, fn, "t_end", 0);
+    PL_LUA_CHECK(L, r->t_end >= 0, fn, "t_end", "> 0 s", r->t_end);
+    r->steps = pl_lua_field_int(L, 2, fn, "steps", 0);
+    PL_LUA_CHECK(L, r->steps >= 0, fn, "steps", ">= 1", (double)r->steps);
+    r->fps = pl_lua_field_number(L, 2, fn, "fps", 0);
+    PL_LUA_CHECK(L, r->fps >= 0 && r->fps <= 10000, fn, "fps", "in (0, 10000] frames/s",
+                 r->fps);
+    r->every = pl_lua_field_int(L, 2, fn, "every", 0);
+    PL_LUA_CHECK(L, r->every >= 0, fn, "every", ">= 1 step", (double)r->every);
+    return 0;
+}
+
+int pl_scene_read_field(pl_scene *s, const char *field, lua_CFunction reader, void *ud)
+{
+    lua_pushcfunction(s->L, reader);
+    lua_pushlightuserdata(s->L, ud);
+    pl_scene_push_result_field(s, field);
+    return protected_call(s, 2, 0);
+}
+
+int pl_scene_run_settings(pl_scene *s, pl_scene_run *out)
+{
+    memset(out, 0, sizeof *out);
+    return pl_scene_read_field(s, "run", read_run, out);
+}
+
+int pl_scene_flag_was_set(pl_scene *s, const char *name, double *value)
+{
+    pl_lua_world *lw = scene_lua_world(s);
+    if (!lw) return 0;
+    for (int i = 0; i < lw->flag_count; i++) {
+        if (strcmp(pl_flag_at(i)->name, name) != 0 || !lw->flag_set[i]) continue;
+        return pl_world_get_flag(lw->w, name, value) == PL_OK;
+    }
+    return 0;
+}
+
+int pl_scene_call_hook(pl_scene *s, const char *name, long long arg)
+{
+    int t = pl_scene_push_result_field(s, name);
+    if (t == LUA_TNIL) {
+        lua_pop(s->L, 1);
+        return 0;
+    }
+    if (t != LUA_TFUNCTION) {
+        pl_scene_set_error(s, "%s: scene result: %s must be a function (got %s)",
+                           s->ctx.scene_path, name, lua_typename(s->L, t));
+        lua_pop(s->L, 1);
+        return -1;
+    }
+    lua_rawgeti(s->L, LUA_REGISTRYINDEX, s->world_ref);
+    lua_pushinteger(s->L, (lua_Integer)arg);
+    return protected_call(s, 2, 0);
+}
+
+void pl_scene_destroy(pl_scene **sp)
+{
+    if (!sp || !*sp) return;
+    lua_close((*sp)->L);
+    free(*sp);
+    *sp = NULL;
+}

@@ -1,0 +1,75 @@
+/// porelab scene loader: runs a Lua scene file in a (sandboxed) Lua state and hands its
+/// world, run settings and hooks to the program. The host (app/) reads render options from
+/// the result itself, so this library never includes the renderer.
+#ifndef PORELAB_LUA_SCENE_H
+#define PORELAB_LUA_SCENE_H
+
+#include <lua.h>
+#include "porelab/world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct pl_scene pl_scene;
+
+typedef struct pl_scene_options {
+    const char *path;    ///< scene file (.lua); required
+    const char *out_dir; ///< output folder for frames and CSV (created on first write); required
+    int trust;           ///< 1 lifts the sandbox (--trust)
+} pl_scene_options;
+
+/// Run settings the scene asked for in its `run` table; 0 = not given.
+typedef struct pl_scene_run {
+    double t_end;        ///< simulated end time, s
+    long long steps;     ///< number of steps
+    double fps;          ///< frames per simulated second
+    long long every;     ///< one frame every N steps
+} pl_scene_run;
+
+/// Creates the Lua state with the porelab module and the sandbox. NULL when out of memory.
+pl_scene *pl_scene_create(const pl_scene_options *opt);
+/// Runs the scene file. Returns 0, or -1 with a one-line message in pl_scene_error
+/// ("scenes/x.lua:12: disc: radius must be > 0 (got -1)").
+int pl_scene_load(pl_scene *s);
+/// The last error message ("" when none) and its Lua traceback ("" when none).
+const char *pl_scene_error(const pl_scene *s);
+const char *pl_scene_traceback(const pl_scene *s);
+
+/// The world the scene returned, or else the last world it created (imperative scripts);
+/// NULL when it created none. Owned by the scene.
+pl_world *pl_scene_world(pl_scene *s);
+/// 1 when the scene returned a world (declarative), 0 for imperative scripts.
+int pl_scene_declarative(const pl_scene *s);
+/// Reads the scene's `run` table. Returns 0, or -1 with a message.
+int pl_scene_run_settings(pl_scene *s, pl_scene_run *out);
+/// 1 when the scene set the flag (in world{flags=...} or world:set_flag), with its value.
+int pl_scene_flag_was_set(pl_scene *s, const char *name, double *value);
+/// Calls result.<name>(world, arg) when the scene defined that hook. Returns 0 (also when
+/// there is no such hook) or -1 with a message.
+int pl_scene_call_hook(pl_scene *s, const char *name, long long arg);
+
+/// The Lua state (for the host reading result fields) and result[field] pushed on its
+/// stack (returns the Lua type; LUA_TNIL when absent). The caller pops it.
+lua_State *pl_scene_lua(pl_scene *s);
+int pl_scene_push_result_field(pl_scene *s, const char *field);
+/// Calls reader(ud, result[field]) protected: the reader gets a light userdata at index 1
+/// and the field (possibly nil) at index 2 and may raise Lua errors (the lua/ helpers in
+/// lua_util.h). Returns 0, or -1 with "scene.lua: <message>" in pl_scene_error.
+int pl_scene_read_field(pl_scene *s, const char *field, lua_CFunction reader, void *ud);
+/// The scene path as given (for messages).
+const char *pl_scene_path(const pl_scene *s);
+/// Sets the error message (used by the host when it rejects a result field).
+void pl_scene_set_error(pl_scene *s, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/// Closes the Lua state (flushing CSV files), frees the world, nulls the pointer.
+void pl_scene_destroy(pl_scene **s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,66 @@
+-- Seed 003 (Tan 1990) §2.2.5.2, Table 2.2: five frictionless discs (R = 1 m,
+-- m = 7539.823 kg) settle under g = 10 m/s^2 between a floor (wall 1) and two side walls
+-- (walls 2 and 3). k_N = 1e7 N/m, c_N = 1e5 N s/m, global C = 4.5e5 N s/m, 5 s.
+-- Written with the MIMES flags of seed 000 (GRAVITY_Y, GLOBAL_DAMPING, TIMESTEPS, PRINT_INT).
+-- Geometry reconstructed from the table: discs 1, 2 on the floor against the side walls,
+-- disc 3 on top of them, discs 4, 5 against the walls on top of disc 3; every line of
+-- centres makes 41.4 degrees with the horizontal (dx = 1.5 m, dy = sqrt(1.75) m).
+local w = porelab.world {
+  dt = 1e-3,
+  flags = { GRAVITY_Y = -10, GLOBAL_DAMPING = 4.5e5, TIMESTEPS = 5000, PRINT_INT = 100 },
+}
+local rock = w:material { name = "rock", density = 2400, kn = 1e7, ks = 0, friction = 0,
+                          cn = 1e5, cs = 0 }
+
+local dy = math.sqrt(1.75)
+w:wall { from = { -2.5, 0 }, to = { 2.5, 0 }, material = rock }      -- wall 1 (floor)
+w:wall { from = { -2.5, 6 }, to = { -2.5, 0 }, material = rock }     -- wall 2 (left)
+w:wall { from = { 2.5, 0 }, to = { 2.5, 6 }, material = rock }       -- wall 3 (right)
+local discs = {
+  w:disc { center = { -1.5, 1 }, radius = 1, material = rock },            -- disc 1
+  w:disc { center = { 1.5, 1 }, radius = 1, material = rock },             -- disc 2
+  w:disc { center = { 0, 1 + dy }, radius = 1, material = rock },          -- disc 3
+  w:disc { center = { -1.5, 1 + 2 * dy }, radius = 1, material = rock },   -- disc 4
+  w:disc { center = { 1.5, 1 + 2 * dy }, radius = 1, material = rock },    -- disc 5
+}
+
+-- Theoretical forces of Table 2.2 (rigid discs in the initial geometry), N.
+local theory = { ["1-w1"] = 188495.6, ["1-w2"] = 128247.7, ["2-w1"] = 188495.6,
+                 ["2-w3"] = 128247.7, ["3-1"] = 170996.9, ["3-2"] = 170996.9,
+                 ["3-4"] = 113997.9, ["3-5"] = 113997.9, ["4-w2"] = 85498.4,
+                 ["5-w3"] = 85498.4 }
+
+local function label(world, i)
+  for k, d in ipairs(discs) do if d:index() == i then return tostring(k) end end
+  return "w" .. tostring(i) -- walls are bodies 1..3
+end
+
+return {
+  world = w,
+  render = {
+    size = { 480, 520 }, force_scale = 2e5, title = "Five discs (Tan 1990)",
+    -- labels as in the seed's Figure 2.12, drawn over each frame (the "overlay" layer)
+    overlay = function(world)
+      local items = {
+        { text = "wall 1", at = { 0, 0.3 }, anchor = "center" },
+        { text = "wall 2", at = { -2.6, 5 }, anchor = "right" },
+        { text = "wall 3", at = { 2.6, 5 }, anchor = "left" },
+      }
+      for k, d in ipairs(discs) do
+        local x, y = d:position()
+        items[#items + 1] = { text = tostring(k), at = { x, y }, anchor = "center", size = 18 }
+      end
+      return items
+    end,
+  },
+  on_finish = function(world)
+    for _, c in ipairs(world:contacts()) do
+      local a, b = label(world, c.a), label(world, c.b)
+      if a:sub(1, 1) == "w" then a, b = b, a end
+      local key = theory[a .. "-" .. b] and a .. "-" .. b or b .. "-" .. a
+      local ref = theory[key]
+      print(string.format("disc %-5s %10.1f N   theory %10s N", key, c.fn,
+                          ref and string.format("%.1f", ref) or "-"))
+    end
+  end,
+}
