@@ -8,8 +8,9 @@
  *                   and is the area gradient in general (shared edges, several crossings)
  *   elastic         F_el = Y A / l_char, Y = k_N of the pair (N/m in 2D),
  *                   l_char = 4 |l1| |l2| / (|l1| + |l2|) (seed 004 eq. 1); wall: l_char = |l1|
- *   damping         F_da = c (dA/dt) / w, w the chord length, c = 2 zeta sqrt(m_red k_eff)
+ *   damping         F_da = c (dA/dt) / w, w the chord length, c = 2 zeta' sqrt(m_red k_eff)
  *                   with k_eff = Y w / l_char (or c = c_N given), |F_da| <= F_el (seed 004 eq. 2),
+ *                   zeta' chosen so that a flat impact with the cutoff rebounds with the e given,
  *                   plus the couple of the same distributed dashpot, -(c w^2 / 12) (w_b - w_a)
  *   friction        incremental tangential spring k_t = k_S k_eff / k_N with the Coulomb cap
  *                   |F_t| <= mu F_el + c (return mapping; the regularized Coulomb law of
@@ -161,6 +162,35 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
     return 1;
 }
 
+/* Damping ratio for the area law from the pair's restitution. With the cutoff of eq. 2
+ * (|F_da| <= F_el) a linear contact rebounds faster than the free damped oscillator, so
+ * zeta from e = exp(-pi zeta / sqrt(1 - zeta^2)) would miss the requested e (e = 0.3 gives
+ * 0.48). The table holds zeta' e at e = 0.02, 0.04, ..., 1 such that a flat contact with the
+ * cutoff, m x'' = -k x - clip(2 zeta' sqrt(m k) x', -k x, k x), rebounds with exactly e
+ * (solved once by RK4 and bisection, docs/contact-laws-polygons.md); zeta' e is smooth
+ * (about 0.35 for small e), so it is interpolated linearly in e. */
+static const double zeta_times_e[50] = {
+    0.35182, 0.34811, 0.34316, 0.33731, 0.33076, 0.32366, 0.31611, 0.30820,
+    0.29998, 0.29152, 0.28287, 0.27409, 0.26520, 0.25626, 0.24731, 0.23837,
+    0.22949, 0.22070, 0.21202, 0.20348, 0.19510, 0.18689, 0.17886, 0.17102,
+    0.16335, 0.15586, 0.14854, 0.14138, 0.13436, 0.12747, 0.12070, 0.11402,
+    0.10744, 0.10093, 0.09449, 0.08809, 0.08175, 0.07543, 0.06914, 0.06287,
+    0.05661, 0.05035, 0.04410, 0.03784, 0.03157, 0.02529, 0.01900, 0.01269,
+    0.00635, 0.00000,
+};
+
+static double cutoff_zeta(double zeta) {
+    if (!(zeta > 0)) return 0;
+    if (zeta >= 1) zeta = 0.999999;
+    const double e = exp(-3.14159265358979323846 * zeta / sqrt(1 - zeta * zeta));
+    if (e <= 0.02) return zeta_times_e[0] / fmax(e, 1e-6);
+    const double x = e / 0.02 - 1;
+    int i = (int)x;
+    if (i >= 49) return 0;
+    const double f = x - i;
+    return ((1 - f) * zeta_times_e[i] + f * zeta_times_e[i + 1]) / e;
+}
+
 /* l_char of seed 004 eq. 1; for a wall (rigid, no centre) the spring spans only the
  * polygon's arm, l_char = |l1|. Floored at 5% of the smaller body radius so that a centroid
  * driven into the overlap cannot make the force infinite (the overlap guard fires first). */
@@ -204,7 +234,7 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     const double sinv = w->inv_mass[a] + w->inv_mass[b];
     const double mred = sinv > 0 ? 1.0 / sinv : 0;
     double cn = pp->cn;
-    if (pp->zeta >= 0) cn = 2 * pp->zeta * sqrt(mred * keff);
+    if (pp->zeta >= 0) cn = 2 * cutoff_zeta(pp->zeta) * sqrt(mred * keff);
     const double area_prev = p->touching ? p->area_prev : 0;
     double fda = dt > 0 ? cn * (g.area - area_prev) / (dt * width) : 0;
     if (fda > fel) fda = fel;

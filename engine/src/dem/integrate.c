@@ -77,7 +77,12 @@ void pl__integrate(pl_world *w, double dt) {
     double *restrict td = w->tdamp, *restrict ts = w->tshear;
     for (int i = 0; i < w->n; i++) {
         const int motion = w->motion[i];
-        if (motion == PL_MOTION_FIXED) continue;
+        if (motion == PL_MOTION_FIXED) {
+            /* no work at rest; clear the parts so they do not pile up if the body is released */
+            fd[i] = fs[i] = (pl_vec2){0, 0};
+            td[i] = ts[i] = 0;
+            continue;
+        }
         pl_vec2 vm;
         double wm;
         if (motion == PL_MOTION_PRESCRIBED || w->inv_mass[i] == 0) {

@@ -184,7 +184,7 @@ static int circle_in_triangle(const pl_fl_mesh *m, int e, pl_vec2 c, double r, d
     cur[0][1] = 2 * PL_FL_PI;
     for (int k = 0; k < 3 && n > 0; k++) {
         pl_vec2 P = m->xy[v[k]], Q = m->xy[v[(k + 1) % 3]];
-        double ex = Q.x - P.x, ey = Q.y - P.y, L = hypot(ex, ey);
+        double ex = Q.x - P.x, ey = Q.y - P.y, L = sqrt(ex * ex + ey * ey);
         double d0 = ex * (c.y - P.y) - ey * (c.x - P.x); /* cross(e, c - P) */
         double s = -d0 / (r * L);
         if (s <= -1) continue;          /* the whole circle is inside this half-plane */
@@ -217,6 +217,27 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
     int i0, j0, i1, j1;
     if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
     double Fx = 0, Fy = 0;
+    /* common case: the whole circle inside the element holding its centre */
+    int ec = pl_fl_locate(m, c);
+    if (ec >= 0) {
+        const int32_t *v = &m->tri[3 * ec];
+        int inside = 1;
+        for (int k = 0; k < 3 && inside; k++) {
+            pl_vec2 P = m->xy[v[k]], Q = m->xy[v[(k + 1) % 3]];
+            double ex = Q.x - P.x, ey = Q.y - P.y;
+            double d0 = ex * (c.y - P.y) - ey * (c.x - P.x); /* L x distance, positive inside */
+            if (d0 < r * sqrt(ex * ex + ey * ey)) inside = 0;
+        }
+        if (inside) {
+            double al, be, ga;
+            circle_coeffs(f, ec, c, r, &al, &be, &ga);
+            arc_force(r, al, be, ga, 0, 2 * PL_FL_PI, &Fx, &Fy);
+            force->x += Fx;
+            force->y += Fy;
+            return;
+        }
+    }
+    const int single = i0 == i1 && j0 == j1; /* no triangle can be met twice */
     for (int j = j0; j <= j1; j++)
         for (int i = i0; i <= i1; i++) {
             size_t cell = (size_t)j * m->gx + i;
@@ -229,12 +250,14 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
                 if (thi.x < lo.x || tlo.x > hi.x || thi.y < lo.y || tlo.y > hi.y) continue;
                 /* a triangle is listed in every cell its box overlaps: handle it only in the
                    first of those cells inside the scanned range */
-                int ti0, tj0, ti1, tj1;
-                pl_fl_grid_range(m, tlo, thi, &ti0, &tj0, &ti1, &tj1);
-                if (i != (ti0 > i0 ? ti0 : i0) || j != (tj0 > j0 ? tj0 : j0)) continue;
                 double arcs[6][2];
                 int na = circle_in_triangle(m, e, c, r, arcs);
                 if (na == 0) continue;
+                if (!single) {
+                    int ti0, tj0, ti1, tj1;
+                    pl_fl_grid_range(m, tlo, thi, &ti0, &tj0, &ti1, &tj1);
+                    if (i != (ti0 > i0 ? ti0 : i0) || j != (tj0 > j0 ? tj0 : j0)) continue;
+                }
                 double al, be, ga;
                 circle_coeffs(f, e, c, r, &al, &be, &ga);
                 for (int q = 0; q < na; q++) arc_force(r, al, be, ga, arcs[q][0], arcs[q][1], &Fx, &Fy);
