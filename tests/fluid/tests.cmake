@@ -19,3 +19,19 @@ if(PLPLOT_LIB AND PLPLOT_INCLUDE)
   target_include_directories(fluid_charts PRIVATE ${PLPLOT_INCLUDE})
   target_link_libraries(fluid_charts PRIVATE porelab_engine ${PLPLOT_LIB})
 endif()
+# Lua binding and scenes: enabled once lua/CMakeLists.txt builds wrap_fluid.c (the lead wires it).
+file(READ ${CMAKE_SOURCE_DIR}/lua/CMakeLists.txt _pl_lua_cmake)
+string(FIND "${_pl_lua_cmake}" "wrap_fluid.c" _pl_fluid_wired)
+if(NOT _pl_fluid_wired EQUAL -1 AND TARGET porelab)
+  add_test(NAME fluid_lua_api COMMAND porelab run ${PL_TEST_DIR}/fluid/lua_fluid_api.lua -q
+           --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/lua_api)
+  set_tests_properties(fluid_lua_api PROPERTIES LABELS fluid TIMEOUT 60)
+  foreach(scene dam_flow buoyancy prop)
+    add_test(NAME fluid_scene_${scene} COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/mimes/${scene}.lua -q
+             --steps 40 --every 20 --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/${scene})
+    set_tests_properties(fluid_scene_${scene} PROPERTIES LABELS fluid TIMEOUT 60)
+  endforeach()
+  add_test(NAME fluid_scene_quicksand COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/fluid_quicksand.lua -q
+           --steps 200 --every 100 --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/quicksand)
+  set_tests_properties(fluid_scene_quicksand PROPERTIES LABELS fluid TIMEOUT 60)
+endif()

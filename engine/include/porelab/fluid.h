@@ -27,7 +27,7 @@ typedef struct pl_fluid_quad_def {
     pl_vec2 corners[4];  ///< m, counter-clockwise and convex (errors otherwise)
     int ndivx;           ///< divisions along corners 0->1 (the quad's s direction); >= 1. Default 4.
     int ndivy;           ///< divisions along corners 1->2 (t direction); >= 1. Default 4.
-    int id;              ///< identification number, unique among quads; default -1 (= index)
+    int id;              ///< identification number, unique among quads; default -1 (automatic: largest id + 1)
     double anisotropy;   ///< D_y / D_x of the elements of this quad (eq. 3.11); > 0. Default 1.
 } pl_fluid_quad_def;
 
@@ -96,7 +96,8 @@ int pl_world_fluid_copy_element_field(pl_world *w, pl_fluid_element_field field,
 /// mesh, 0 outside (then pressure = 0 and head = NaN).
 int pl_world_fluid_pressure_at(pl_world *w, pl_vec2 p, double *pressure, double *head);
 /// Net flow (m^2/s per unit thickness) entering the domain through the nodes of head line
-/// `line` (negative when leaving), from the reactions K h - f of the assembled system.
+/// `line` (negative when leaving), from the reactions K h - f of the assembled system (the
+/// steady balance: in transient runs the storage term is not included).
 double pl_world_fluid_line_inflow(pl_world *w, int line);
 /// Fluid force (N per m thickness) and moment about the centroid (N m) on one body for the
 /// current field: pressure on its outline plus interphase drag (when on).

@@ -32,7 +32,7 @@ int pl__ensure_body_capacity(pl_world *w, int need) {
     GROW(w->radius, cap); GROW(w->area, cap); GROW(w->shape, cap); GROW(w->motion, cap);
     GROW(w->material, cap); GROW(w->user_id, cap); GROW(w->law, cap);
     GROW(w->load, cap); GROW(w->load_moment, cap); GROW(w->x0, cap);
-    GROW(w->fdamp, cap); GROW(w->fshear, cap); GROW(w->tdamp, cap); GROW(w->tshear, cap);
+    GROW(w->tally, cap);
     GROW(w->vert_offset, cap); GROW(w->vert_count, cap);
     GROW(w->pos_at_build, cap); GROW(w->angle_at_build, cap);
     w->cap = cap;
@@ -145,8 +145,9 @@ int pl_world_add_body(pl_world *w, const pl_body_def *d) {
     w->angle[i] = 0;
     w->vel[i] = d->motion == PL_MOTION_FIXED ? (pl_vec2){0, 0} : d->velocity;
     w->omega[i] = d->motion == PL_MOTION_FIXED ? 0 : d->omega;
-    w->force[i] = w->fdamp[i] = w->fshear[i] = (pl_vec2){0, 0};
-    w->torque[i] = w->tdamp[i] = w->tshear[i] = 0;
+    w->force[i] = (pl_vec2){0, 0};
+    w->torque[i] = 0;
+    memset(&w->tally[i], 0, sizeof w->tally[i]);
     w->radius[i] = radius;
     w->load[i] = (pl_vec2){0, 0};
     w->load_moment[i] = 0;

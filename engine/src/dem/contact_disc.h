@@ -1,10 +1,185 @@
-/* Cundall-Strack contacts of discs with discs and with wall segments (seed 003 §2.2.4.2). */
+/* Cundall-Strack contact law of discs with discs and with wall segments (seed 003 §2.2.4.2,
+ * eqs. 2.7-2.20), written as inline kernels for the narrow-phase loop (contact_dispatch.c):
+ *   normal:  F_n = k_N delta - c_N v_n   (linear spring on the overlap delta, dashpot)
+ *   shear:   S <- S - k_S v_t dt  (incremental spring, history kept while the contact lasts)
+ *            D_S = -c_S v_t;  Coulomb (eq. 2.17): |S| <= mu k_N delta + c; when exceeded S is
+ *            set to the limit with its sign and the shear dashpot is off (sliding).
+ * The contact lasts while the outlines overlap; the spring-plus-dashpot normal force may turn
+ * slightly tensile just before separation, as in the seed (this keeps the analytic
+ * restitution e = exp(-pi zeta / sqrt(1 - zeta^2))).
+ * Conventions: the normal n points from a to b, the tangent t = (-n.y, n.x); the force on b is
+ * +F = F_n n + F_t t, on a it is -F. The normal part passes through both centres, so the moment
+ * about a centre at distance l from the contact point is -l F_t (eq. 2.20).
+ * For the exact energy tallies (integrate.c) the dashpot and tangential-spring parts are also
+ * summed per body. */
 #ifndef PL_CONTACT_DISC_H
 #define PL_CONTACT_DISC_H
 #include "dem/world_internal.h"
+#include <math.h>
 
-/* Both evaluate pair p, update its history and state, add forces and moments into
-   w->force / w->torque and dissipated energy into the world's tallies. */
-void pl__contact_disc_disc(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt);
-void pl__contact_disc_segment(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt);
+/* Body arrays hoisted out of the world once per step (no aliasing reloads in the loop). */
+typedef struct pl_disc_ctx {
+    const pl_vec2 *restrict pos, *restrict vel;
+    const double *restrict omega, *restrict radius;
+    pl_vec2 *restrict force;
+    double *restrict torque;
+    pl_tally *restrict tally;
+    double e_shear, e_normal;
+    double worst_ratio;
+    int worst_a, worst_b;
+} pl_disc_ctx;
+
+static inline void pl__untouch(pl_pair *p) {
+    if (!p->touching) return; /* most listed pairs stay apart: do not rewrite them */
+    p->touching = 0;
+    p->fs = 0;
+    p->fn = 0;
+    p->ft = 0;
+    p->overlap = 0;
+    p->elastic = 0;
+}
+
+static inline double pl__cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y * f.x; }
+
+/* Evaluates the law for a touching pair. vn, vt: relative velocity of b's material point with
+   respect to a's. arm_a, arm_b: distances from the disc centres to the contact point (the
+   moment is then -arm F_t). A wall is not centred on the line of the normal force: pass its
+   lever vector (contact point - wall centroid) in wall_r and its end (0: a, 1: b) in wall_end,
+   or wall_r = NULL for two discs. */
+static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, pl_pair *p, const pl_pair_params *pp,
+                                                                double dt, int a, int b, pl_vec2 n, double delta,
+                                                                pl_vec2 point, double vn, double vt, double arm_a,
+                                                                double arm_b, double rmin, const pl_vec2 *wall_r,
+                                                                int wall_end) {
+    const double fn_el = pp->kn * delta;
+    const double fn_d = -p->cn * vn;
+    const double fn = fn_el + fn_d;
+    double fs = p->fs - pp->ks * vt * dt;
+    double fd = -p->cs * vt;
+    const double smax = pp->friction * fn_el + pp->cohesion;
+    if (fabs(fs) > smax) {
+        const double lim = smax > 0 ? smax : 0;
+        fs = fs > 0 ? lim : -lim;
+        fd = 0;
+    }
+    const double ft = fs + fd;
+    const double es = 0.5 * fs * fs * pp->inv_ks, en = 0.5 * fn_el * delta;
+    p->fs = fs;
+    p->fn = fn;
+    p->ft = ft;
+    p->overlap = delta;
+    p->normal = n;
+    p->point = point;
+    p->touching = 1;
+    p->elastic = en + es;
+    c->e_shear += es;
+    c->e_normal += en;
+    const pl_vec2 t = {-n.y, n.x};
+    const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
+    const pl_vec2 Fd = {fn_d * n.x + fd * t.x, fn_d * n.y + fd * t.y};
+    const pl_vec2 Fs = {fs * t.x, fs * t.y};
+    pl_tally *ta = &c->tally[a], *tb = &c->tally[b];
+    c->force[b].x += F.x;
+    c->force[b].y += F.y;
+    c->force[a].x -= F.x;
+    c->force[a].y -= F.y;
+    tb->dfx += Fd.x;
+    tb->dfy += Fd.y;
+    ta->dfx -= Fd.x;
+    ta->dfy -= Fd.y;
+    tb->sfx += Fs.x;
+    tb->sfy += Fs.y;
+    ta->sfx -= Fs.x;
+    ta->sfy -= Fs.y;
+    if (wall_r) {
+        /* moment on the wall from +F (wall b) or -F (wall a) about its centroid */
+        const double sgn = wall_end == 1 ? 1 : -1;
+        const int wi = wall_end == 1 ? b : a;
+        pl_tally *tw = wall_end == 1 ? tb : ta, *tk = wall_end == 1 ? ta : tb;
+        const double arm = wall_end == 1 ? arm_a : arm_b;
+        c->torque[wi] += sgn * pl__cross2(*wall_r, F);
+        tw->dm += sgn * pl__cross2(*wall_r, Fd);
+        tw->sm += sgn * pl__cross2(*wall_r, Fs);
+        c->torque[wall_end == 1 ? a : b] -= arm * ft;
+        tk->dm -= arm * fd;
+        tk->sm -= arm * fs;
+    } else {
+        c->torque[a] -= arm_a * ft;
+        c->torque[b] -= arm_b * ft;
+        ta->dm -= arm_a * fd;
+        tb->dm -= arm_b * fd;
+        ta->sm -= arm_a * fs;
+        tb->sm -= arm_b * fs;
+    }
+    const double ratio = delta / rmin;
+    if (ratio > c->worst_ratio) {
+        c->worst_ratio = ratio;
+        c->worst_a = a;
+        c->worst_b = b;
+    }
+}
+
+static inline void pl__contact_disc_disc(pl_disc_ctx *c, pl_pair *p, const pl_pair_params *pp, double dt) {
+    const int a = p->a, b = p->b;
+    const pl_vec2 pa = c->pos[a], pb = c->pos[b];
+    const double dx = pb.x - pa.x, dy = pb.y - pa.y;
+    const double ra = c->radius[a], rb = c->radius[b], rs = ra + rb;
+    const double d2 = dx * dx + dy * dy;
+    if (d2 >= rs * rs) {
+        pl__untouch(p);
+        return;
+    }
+    const double d = sqrt(d2), id = d > 0 ? 1.0 / d : 0;
+    const pl_vec2 n = d > 0 ? (pl_vec2){dx * id, dy * id} : (pl_vec2){0, 1};
+    const double delta = rs - d;
+    /* contact point: middle of the overlap on the line of centres */
+    const double la = ra - 0.5 * delta, lb = rb - 0.5 * delta;
+    const pl_vec2 point = {pa.x + la * n.x, pa.y + la * n.y};
+    /* material point velocities: v + omega x r, r = +la n for a and -lb n for b */
+    const pl_vec2 va = c->vel[a], vb = c->vel[b];
+    const double wa = c->omega[a] * la, wb = c->omega[b] * lb;
+    const pl_vec2 vrel = {vb.x + wb * n.y - va.x + wa * n.y, vb.y - wb * n.x - va.y - wa * n.x};
+    const double vn = vrel.x * n.x + vrel.y * n.y, vt = -vrel.x * n.y + vrel.y * n.x;
+    pl__disc_law(c, p, pp, dt, a, b, n, delta, point, vn, vt, la, lb, ra < rb ? ra : rb, NULL, 0);
+}
+
+static inline void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w, pl_pair *p, const pl_pair_params *pp,
+                                            double dt) {
+    const int s = p->swapped ? p->a : p->b; /* the wall */
+    const int k = p->swapped ? p->b : p->a; /* the disc */
+    const pl_vec2 *v = &w->verts_world[w->vert_offset[s]];
+    const pl_vec2 A = v[0], B = v[1], P = c->pos[k];
+    const double ex = B.x - A.x, ey = B.y - A.y, l2 = ex * ex + ey * ey;
+    double u = ((P.x - A.x) * ex + (P.y - A.y) * ey) / l2;
+    u = u < 0 ? 0 : (u > 1 ? 1 : u);
+    const pl_vec2 Q = {A.x + u * ex, A.y + u * ey};
+    const double dx = P.x - Q.x, dy = P.y - Q.y, d2 = dx * dx + dy * dy;
+    const double r = c->radius[k];
+    if (d2 >= r * r) {
+        pl__untouch(p);
+        return;
+    }
+    const double d = sqrt(d2);
+    /* normal from the wall towards the disc; a centre exactly on the wall uses the wall's
+       left-hand normal */
+    const pl_vec2 n = d > 0 ? (pl_vec2){dx / d, dy / d} : (pl_vec2){-ey / sqrt(l2), ex / sqrt(l2)};
+    const double delta = r - d;
+    const double lk = r - 0.5 * delta;
+    const pl_vec2 point = {P.x - lk * n.x, P.y - lk * n.y};
+    /* wall material velocity at the contact point, and its lever about its centroid along t */
+    const pl_vec2 rw = {point.x - c->pos[s].x, point.y - c->pos[s].y};
+    const pl_vec2 vw = {c->vel[s].x - c->omega[s] * rw.y, c->vel[s].y + c->omega[s] * rw.x};
+    const pl_vec2 vk = {c->vel[k].x + c->omega[k] * lk * n.y, c->vel[k].y - c->omega[k] * lk * n.x};
+    if (!p->swapped) {
+        /* a = disc, b = wall: n from a to b is -n; the tangent flips with it */
+        const pl_vec2 nab = {-n.x, -n.y};
+        const pl_vec2 vrel = {vw.x - vk.x, vw.y - vk.y};
+        const double vn = vrel.x * nab.x + vrel.y * nab.y, vt = -vrel.x * nab.y + vrel.y * nab.x;
+        pl__disc_law(c, p, pp, dt, k, s, nab, delta, point, vn, vt, lk, 0, r, &rw, 1);
+    } else {
+        const pl_vec2 vrel = {vk.x - vw.x, vk.y - vw.y};
+        const double vn = vrel.x * n.x + vrel.y * n.y, vt = -vrel.x * n.y + vrel.y * n.x;
+        pl__disc_law(c, p, pp, dt, s, k, n, delta, point, vn, vt, 0, lk, r, &rw, 0);
+    }
+}
 #endif

@@ -12,6 +12,7 @@
  *                   with k_eff = Y w / l_char (or c = c_N given), |F_da| <= F_el (seed 004 eq. 2),
  *                   zeta' chosen so that a flat impact with the cutoff rebounds with the e given,
  *                   plus the couple of the same distributed dashpot, -(c w^2 / 12) (w_b - w_a)
+ *                   (polygon-polygon and polygon-wall only)
  *   friction        incremental tangential spring k_t = k_S k_eff / k_N with the Coulomb cap
  *                   |F_t| <= mu F_el + c (return mapping; the regularized Coulomb law of
  *                   seed 002 §2.3.3), tangential dashpot while sticking as in the disc law
@@ -244,8 +245,11 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
      * of the contact in and lifts the other, d'(x) = w_rel x, and integrating (c / w) d'(x) x
      * over the width gives the couple -(c w^2 / 12) w_rel. Eq. 2 alone (a resultant on dA/dt)
      * leaves rocking on a face undamped, since the area hardly changes while it rocks. Capped
-     * like eq. 2 by the largest moment the elastic pressure can exert, F_el w / 2. */
-    const double wrel = w->omega[b] - w->omega[a];
+     * like eq. 2 by the largest moment the elastic pressure can exert, F_el w / 2.
+     * Not for a disc: its relative rotation is rolling, and the couple would act as a
+     * viscous rolling resistance that the disc laws (seed 003) do not have. */
+    const int disc = w->shape[a] == PL_SHAPE_DISC || w->shape[b] == PL_SHAPE_DISC;
+    const double wrel = disc ? 0 : w->omega[b] - w->omega[a];
     double mda = -cn * width * width / 12 * wrel;
     if (mda > 0.5 * fel * width) mda = 0.5 * fel * width;
     if (mda < -0.5 * fel * width) mda = -0.5 * fel * width;

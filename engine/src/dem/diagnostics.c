@@ -40,12 +40,7 @@ double pl__gravitational_energy(const pl_world *w) {
     return e;
 }
 
-double pl__elastic_energy(const pl_world *w) {
-    double e = 0;
-    for (int k = 0; k < w->pair_n; k++)
-        if (w->pairs[k].touching) e += w->pairs[k].elastic;
-    return e;
-}
+double pl__elastic_energy(const pl_world *w) { return w->e_elastic; }
 
 pl_energy pl_world_energy(const pl_world *w) {
     pl_energy e;

@@ -73,14 +73,12 @@ void pl__integrate(pl_world *w, double dt) {
     const double lim = 0.5 * w->skin, lim2 = lim * lim;
     int moved = 0;
     pl_vec2 *restrict pos = w->pos, *restrict vel = w->vel;
-    pl_vec2 *restrict fd = w->fdamp, *restrict fs = w->fshear;
-    double *restrict td = w->tdamp, *restrict ts = w->tshear;
+    pl_tally *restrict tl = w->tally;
     for (int i = 0; i < w->n; i++) {
         const int motion = w->motion[i];
         if (motion == PL_MOTION_FIXED) {
             /* no work at rest; clear the parts so they do not pile up if the body is released */
-            fd[i] = fs[i] = (pl_vec2){0, 0};
-            td[i] = ts[i] = 0;
+            tl[i] = (pl_tally){0, 0, 0, 0, 0, 0};
             continue;
         }
         pl_vec2 vm;
@@ -153,10 +151,9 @@ void pl__integrate(pl_world *w, double dt) {
             }
             moved = d2 > lim2;
         }
-        damped -= (fd[i].x * vm.x + fd[i].y * vm.y + td[i] * wm) * dt;
-        work_shear += (fs[i].x * vm.x + fs[i].y * vm.y + ts[i] * wm) * dt;
-        fd[i] = fs[i] = (pl_vec2){0, 0};
-        td[i] = ts[i] = 0;
+        damped -= (tl[i].dfx * vm.x + tl[i].dfy * vm.y + tl[i].dm * wm) * dt;
+        work_shear += (tl[i].sfx * vm.x + tl[i].sfy * vm.y + tl[i].sm * wm) * dt;
+        tl[i] = (pl_tally){0, 0, 0, 0, 0, 0};
     }
     w->e_damped += damped;
     w->e_friction += -work_shear - (w->e_shear - w->e_shear_prev);

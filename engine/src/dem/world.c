@@ -60,7 +60,7 @@ void pl_world_destroy(pl_world **wp) {
     free(w->mass); free(w->inv_mass); free(w->inertia); free(w->inv_inertia);
     free(w->radius); free(w->area); free(w->shape); free(w->motion);
     free(w->material); free(w->user_id); free(w->law); free(w->load); free(w->load_moment);
-    free(w->x0); free(w->fdamp); free(w->fshear); free(w->tdamp); free(w->tshear); free(w->vert_offset); free(w->vert_count);
+    free(w->x0); free(w->tally); free(w->vert_offset); free(w->vert_count);
     free(w->verts_local); free(w->verts_world);
     free(w->pairs); free(w->pairs_scratch);
     free(w->pos_at_build); free(w->angle_at_build);
@@ -91,10 +91,7 @@ static void init_energy_reference(pl_world *w) {
        is) so that energy stored in overlaps present at the start is counted */
     if (pl__neighbor_update(w) == PL_OK) {
         pl__compute_contact_forces(w, 0);
-        for (int i = 0; i < w->n; i++) {
-            w->fdamp[i] = w->fshear[i] = (pl_vec2){0, 0};
-            w->tdamp[i] = w->tshear[i] = 0;
-        }
+        memset(w->tally, 0, (size_t)w->n * sizeof *w->tally);
     }
     w->e_supply0 = pl__kinetic_energy(w) + pl__elastic_energy(w);
     w->pe0 = pl__gravitational_energy(w);

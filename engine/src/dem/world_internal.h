@@ -72,6 +72,12 @@ typedef struct pl_motion {
 
 struct pl_fluid; /* fluid module (engine/src/fluid) */
 
+/* Per-body sums of the dashpot part (d*) and the tangential-spring part (s*) of the contact
+   forces and moments of one step, for the exact energy tallies (integrate.c). */
+typedef struct pl_tally {
+    double dfx, dfy, dm, sfx, sfy, sm;
+} pl_tally;
+
 struct pl_world {
     pl_world_def def;
     char error[PL_ERR_LEN];
@@ -97,9 +103,9 @@ struct pl_world {
     int any_load;                 /* 1 once any body has a load */
     /* parts of the contact force that dissipate or store energy, for exact energy tallies:
        dashpot forces, and the tangential (Coulomb spring) forces, per body and step */
-    pl_vec2 *fdamp, *fshear;
-    double *tdamp, *tshear;
+    pl_tally *tally;
     double e_shear, e_shear_prev;  /* energy in the tangential springs now / one step ago */
+    double e_elastic;              /* all elastic energy in contacts at the last evaluation */
     int nonfinite_body;            /* set by the integrator: first body with a non-finite state, or -1 */
     pl_vec2 *x0;                  /* reference position for sinusoid laws */
     /* polygon and segment outlines: local vertices relative to the centroid at angle 0 */
@@ -175,7 +181,7 @@ int pl__ensure_body_capacity(pl_world *w, int need);
 pl_status pl__neighbor_update(pl_world *w);
 void pl__neighbor_mark_dirty(pl_world *w);
 
-/* Forces */
+/* Forces (narrow phase). Polygon laws may raise w->worst_overlap_ratio themselves. */
 void pl__compute_contact_forces(pl_world *w, double dt);
 
 /* Integration */

@@ -273,7 +273,7 @@ void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i, pl
     else if (sh == PL_SHAPE_POLYGON)
         pl_fl_polygon_force(f, &b->verts[b->vert_offset[i]], b->vert_count[i], b->pos[i], force, moment);
     else return;
-    if (f->par.drag && f->body_cover_start && i < b->n) {
+    if (f->par.drag && f->body_cover_start && i < f->cover_bodies) { /* bodies added since: none yet */
         const double rg = f->par.density * f->par.g;
         for (int k = f->body_cover_start[i]; k < f->body_cover_start[i + 1]; k++) {
             const pl_fl_cover *cv = &f->cover[k];

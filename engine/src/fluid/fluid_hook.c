@@ -58,7 +58,7 @@ void pl__fluid_free(struct pl_fluid *f) {
     pl__fluid_free_state(f);
     pl_fl_system_free(&f->sys);
     pl_fl_mesh_free(&f->mesh);
-    free(f->quads); free(f->lines); free(f->cover); free(f->body_cover_start);
+    free(f->quads); free(f->lines); free(f->cover); free(f->body_cover_start); free(f->pix_pair);
     free(f);
 }
 

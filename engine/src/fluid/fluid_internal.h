@@ -162,7 +162,9 @@ struct pl_fluid {
     double *grad;               /* 2 * ne total-head gradient */
     pl_fl_cover *cover; int ncover, cover_cap;
     int32_t *stamp; int32_t stamp_gen; /* ne: last body generation that met the element */
+    int32_t *pix_cnt, *pix_fill, *pix_pair; int pix_cap; /* pixellation scratch */
     int32_t *body_cover_start;  /* n+1 per body ranges into cover (sorted by body) */
+    int cover_bodies;           /* bodies known to the last porosity update */
     int body_cap;
     int k_dirty;                /* permeabilities changed since the last assembly */
     int have_solution;          /* head holds a solution for the current system */

@@ -99,13 +99,12 @@ static int tri_push(tri_list *l, int a, int b, int c, int quad) {
 }
 
 /* ---- node merge: sort by x, cluster within tol */
-static const pl_vec2 *g_sort_xy;
+typedef struct xkey { double x; int32_t i; } xkey;
 static int cmp_x(const void *a, const void *b) {
-    int ia = *(const int32_t *)a, ib = *(const int32_t *)b;
-    double xa = g_sort_xy[ia].x, xb = g_sort_xy[ib].x;
-    if (xa < xb) return -1;
-    if (xa > xb) return 1;
-    return (ia > ib) - (ia < ib);
+    const xkey *p = a, *q = b;
+    if (p->x < q->x) return -1;
+    if (p->x > q->x) return 1;
+    return (p->i > q->i) - (p->i < q->i);
 }
 
 /* ---- uniform grid of points for range search */
@@ -268,9 +267,12 @@ pl_status pl_fl_mesh_build(pl_fl_mesh *m, const pl_fl_quad *quads, int nq, char 
     order = malloc(sizeof(int32_t) * (size_t)nn);
     newid = malloc(sizeof(int32_t) * (size_t)nn);
     if (!rep || !order || !newid) goto fail;
-    for (int i = 0; i < nn; i++) { rep[i] = i; order[i] = i; }
-    g_sort_xy = xy;
-    qsort(order, (size_t)nn, sizeof(int32_t), cmp_x);
+    xkey *keys = malloc(sizeof(xkey) * (size_t)nn);
+    if (!keys) goto fail;
+    for (int i = 0; i < nn; i++) { rep[i] = i; keys[i] = (xkey){xy[i].x, i}; }
+    qsort(keys, (size_t)nn, sizeof(xkey), cmp_x);
+    for (int i = 0; i < nn; i++) order[i] = keys[i].i;
+    free(keys);
     for (int a = 0; a < nn; a++) {
         int i = order[a];
         for (int b = a + 1; b < nn && xy[order[b]].x - xy[i].x <= tol; b++) {

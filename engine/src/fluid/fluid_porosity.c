@@ -165,6 +165,7 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
     double t0 = pl_fl_now();
     memset(f->solid, 0, sizeof(double) * (size_t)m->ne);
     f->ncover = 0;
+    f->cover_bodies = 0;
     if (b->n + 1 > f->body_cap) {
         int nc = b->n + 1 + 64;
         int32_t *p = realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
@@ -221,20 +222,29 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
             }
     }
     f->body_cover_start[b->n] = f->ncover;
+    f->cover_bodies = b->n;
     if (f->par.porosity_method == 1 && f->ncover > 0) {
-        /* group pairs by element (counting sort) and pixellate each element once */
-        int32_t *cnt = calloc((size_t)m->ne + 1, sizeof(int32_t));
-        int32_t *pair_of = malloc(sizeof(int32_t) * (size_t)f->ncover);
-        if (!cnt || !pair_of) { free(cnt); free(pair_of); return PL_ERR_NOMEM; }
+        /* group pairs by element (counting sort) and pixellate each element once; the
+           scratch arrays are kept in the model and grow only when needed */
+        if (f->pix_cap < f->ncover) {
+            int32_t *p = realloc(f->pix_pair, sizeof(int32_t) * (size_t)f->cover_cap);
+            if (!p) return PL_ERR_NOMEM;
+            f->pix_pair = p;
+            f->pix_cap = f->cover_cap;
+        }
+        if (!f->pix_cnt) {
+            f->pix_cnt = malloc(sizeof(int32_t) * (size_t)(m->ne + 1));
+            f->pix_fill = malloc(sizeof(int32_t) * (size_t)m->ne);
+            if (!f->pix_cnt || !f->pix_fill) return PL_ERR_NOMEM;
+        }
+        int32_t *cnt = f->pix_cnt, *fill = f->pix_fill, *pair_of = f->pix_pair;
+        memset(cnt, 0, sizeof(int32_t) * (size_t)(m->ne + 1));
         for (int k = 0; k < f->ncover; k++) cnt[f->cover[k].elem + 1]++;
         for (int e = 0; e < m->ne; e++) cnt[e + 1] += cnt[e];
-        int32_t *fill = malloc(sizeof(int32_t) * (size_t)m->ne);
-        if (!fill) { free(cnt); free(pair_of); return PL_ERR_NOMEM; }
         memcpy(fill, cnt, sizeof(int32_t) * (size_t)m->ne);
         for (int k = 0; k < f->ncover; k++) pair_of[fill[f->cover[k].elem]++] = k;
         for (int e = 0; e < m->ne; e++)
             if (cnt[e + 1] > cnt[e]) pixel_element(f, b, e, cnt[e], cnt[e + 1], pair_of);
-        free(fill); free(cnt); free(pair_of);
     }
     /* void ratio (eq. 3.9) with the thesis's clamp 0.01 A <= A_s <= 0.99 A */
     for (int e = 0; e < m->ne; e++) {

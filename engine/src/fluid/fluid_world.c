@@ -100,11 +100,14 @@ static struct pl_fluid *model(pl_world *w) {
 void pl__fluid_free_state(struct pl_fluid *f) {
     free(f->head); free(f->head_prev); free(f->perm); free(f->perm_assembled); free(f->solid);
     free(f->voidr); free(f->porosity); free(f->grad); free(f->stamp); free(f->perm_user);
+    free(f->pix_cnt); free(f->pix_fill);
+    f->pix_cnt = f->pix_fill = NULL;
     f->head = f->head_prev = f->perm = f->perm_assembled = f->solid = f->voidr = f->porosity = f->grad = NULL;
     f->perm_user = NULL;
     f->stamp = NULL;
     f->stamp_gen = 0;
     f->ncover = 0;
+    f->cover_bodies = 0;
 }
 
 /* Meshes and builds the system when the input changed. */
@@ -222,7 +225,12 @@ int pl_world_add_fluid_quad(pl_world *w, const pl_fluid_quad_def *def) {
     for (int k = 0; k < 4; k++) q.c[k] = def->corners[k];
     q.ndivx = def->ndivx;
     q.ndivy = def->ndivy;
-    q.id = def->id >= 0 ? def->id : f->nq;
+    if (def->id >= 0) q.id = def->id;
+    else { /* automatic: one more than the largest id in use */
+        q.id = 0;
+        for (int k = 0; k < f->nq; k++)
+            if (f->quads[k].id >= q.id) q.id = f->quads[k].id + 1;
+    }
     q.anisotropy = def->anisotropy;
     for (int k = 0; k < f->nq; k++)
         if (f->quads[k].id == q.id)
