@@ -50,6 +50,13 @@ void pl_lua_check_status(lua_State *L, const pl_world *w, int s, const char *fn)
  * disc/rectangle/polygon/wall constructors). Applies a prescribed velocity when asked. */
 void pl_lua_add_body(lua_State *L, int world_idx, const pl_body_def *def, const char *fn);
 
+/* The body handle at idx: returns its engine index and sets *w to its world. */
+int pl_lua_check_body(lua_State *L, int idx, pl_world **w);
+
+/* Body methods for boundary motions (wrap_motion.c) and world diagnostics (wrap_diag.c). */
+extern const luaL_Reg pl_lua_motion_methods[];
+extern const luaL_Reg pl_lua_diag_methods[];
+
 /* Records that flag `name` was set by the scene (for porelab info). */
 void pl_lua_mark_flag(pl_lua_world *lw, const char *name);
 

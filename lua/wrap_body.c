@@ -24,7 +24,7 @@ void pl_lua_push_body(lua_State *L, int world_idx, int body)
     luaL_setmetatable(L, PL_LUA_BODY_MT);
 }
 
-static int check_body(lua_State *L, int idx, pl_world **w)
+int pl_lua_check_body(lua_State *L, int idx, pl_world **w)
 {
     body_ud *b = luaL_checkudata(L, idx, PL_LUA_BODY_MT);
     lua_getiuservalue(L, idx, 1);
@@ -195,7 +195,7 @@ const luaL_Reg pl_lua_body_constructors[] = {{"disc", w_disc},
 static pl_body_info body_info(lua_State *L, int idx, pl_world **w, int *index)
 {
     pl_body_info info;
-    *index = check_body(L, idx, w);
+    *index = pl_lua_check_body(L, idx, w);
     pl_lua_check_status(L, *w, pl_world_body_info(*w, *index, &info), "body");
     return info;
 }
@@ -203,7 +203,7 @@ static pl_body_info body_info(lua_State *L, int idx, pl_world **w, int *index)
 static int b_index(lua_State *L)
 {
     pl_world *w;
-    lua_pushinteger(L, check_body(L, 1, &w) + 1);
+    lua_pushinteger(L, pl_lua_check_body(L, 1, &w) + 1);
     return 1;
 }
 
@@ -292,7 +292,7 @@ static int b_material(lua_State *L)
 static int b_vertices(lua_State *L)
 {
     pl_world *w;
-    int i = check_body(L, 1, &w);
+    int i = pl_lua_check_body(L, 1, &w);
     pl_vec2 v[PL_MAX_POLY_VERTICES];
     int n = pl_world_body_vertices(w, i, v, PL_MAX_POLY_VERTICES);
     lua_createtable(L, n, 0);
@@ -309,7 +309,7 @@ static int b_vertices(lua_State *L)
 static int b_set_velocity(lua_State *L)
 {
     pl_world *w;
-    int i = check_body(L, 1, &w);
+    int i = pl_lua_check_body(L, 1, &w);
     pl_vec2 v = {luaL_checknumber(L, 2), luaL_checknumber(L, 3)};
     double omega = luaL_optnumber(L, 4, 0);
     pl_lua_check_status(L, w, pl_world_prescribe_velocity(w, i, v, omega), "set_velocity");
@@ -342,7 +342,7 @@ static int b_set_state(lua_State *L)
 static int b_set_motion(lua_State *L)
 {
     pl_world *w;
-    int i = check_body(L, 1, &w);
+    int i = pl_lua_check_body(L, 1, &w);
     int m = luaL_checkoption(L, 2, NULL, motion_names);
     pl_lua_check_status(L, w, pl_world_set_body_motion(w, i, (pl_motion_type)m), "set_motion");
     return 0;
@@ -351,7 +351,7 @@ static int b_set_motion(lua_State *L)
 static int b_set_load(lua_State *L)
 {
     pl_world *w;
-    int i = check_body(L, 1, &w);
+    int i = pl_lua_check_body(L, 1, &w);
     pl_vec2 f = {luaL_checknumber(L, 2), luaL_checknumber(L, 3)};
     double moment = luaL_optnumber(L, 4, 0);
     pl_lua_check_status(L, w, pl_world_set_body_load(w, i, f, moment), "set_load");
@@ -361,7 +361,7 @@ static int b_set_load(lua_State *L)
 static int b_set_density(lua_State *L)
 {
     pl_world *w;
-    int i = check_body(L, 1, &w);
+    int i = pl_lua_check_body(L, 1, &w);
     double rho = luaL_checknumber(L, 2);
     PL_LUA_CHECK(L, rho > 0 && isfinite(rho), "set_density", "density", "> 0 kg/m^3", rho);
     pl_lua_check_status(L, w, pl_world_set_body_density(w, i, rho), "set_density");
@@ -413,6 +413,7 @@ void pl_lua_register_body(lua_State *L)
     lua_pushcfunction(L, b_eq);
     lua_setfield(L, -2, "__eq");
     luaL_newlib(L, body_methods);
+    luaL_setfuncs(L, pl_lua_motion_methods, 0); /* wrap_motion.c */
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
 }

@@ -411,6 +411,7 @@ void pl_lua_register_world(lua_State *L)
     luaL_setfuncs(L, pl_lua_body_constructors, 0);
     luaL_setfuncs(L, pl_lua_material_constructors, 0);
     luaL_setfuncs(L, pl_lua_fluid_methods, 0);
+    luaL_setfuncs(L, pl_lua_diag_methods, 0);
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
 }

@@ -48,6 +48,7 @@ typedef struct geo {
     pl_vec2 n;     /* unit normal a -> b */
     double chord;  /* contact width w, m */
     double thick;  /* extent of the overlap region along n, m */
+    double d2;     /* Winkler integral of the thickness squared, m^3 (< 0: not available) */
     int wall;      /* 1 when one of the bodies is a wall segment */
 } geo;
 
@@ -60,6 +61,54 @@ static double thickness(const pl_overlap *o, pl_vec2 n) {
         hi = fmax(hi, s);
     }
     return o->n > 0 ? hi - lo : 0;
+}
+
+/* Cross-section d(x) of the overlap polygon along n at x along t (the thickness of the
+ * overlap at that point of the contact), from the edges spanning x. */
+static double section(const double *x, const double *y, int m, double xq) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < m; k++) {
+        const int k1 = k + 1 < m ? k + 1 : 0;
+        const double x0 = x[k], x1 = x[k1];
+        if ((x0 <= xq && xq <= x1) || (x1 <= xq && xq <= x0)) {
+            const double yq = x1 != x0 ? y[k] + (y[k1] - y[k]) * (xq - x0) / (x1 - x0) : y[k];
+            lo = fmin(lo, yq);
+            hi = fmax(hi, yq);
+        }
+    }
+    return hi > lo ? hi - lo : 0;
+}
+
+/* Winkler integral of d(x)^2 over the contact: with springs of stiffness Y / l_char per unit
+ * length across the width, each compressed by the local thickness d(x) of the overlap, the
+ * resultant is (Y / l_char) int d dx = Y A / l_char (eq. 1, at the overlap centroid) and the
+ * stored energy is (Y / 2 l_char) int d^2 dx. d is linear between the corners' x, so each
+ * piece integrates exactly by Simpson's rule from two interior samples. */
+static double winkler_d2(const pl_overlap *o, pl_vec2 n) {
+    const int m = o->n;
+    if (m < 3 || m > PL_CLIP_MAX_OUT) return 0;
+    const pl_vec2 t = {-n.y, n.x}, o0 = o->v[0];
+    double x[PL_CLIP_MAX_OUT], y[PL_CLIP_MAX_OUT], xs[PL_CLIP_MAX_OUT];
+    for (int k = 0; k < m; k++) {
+        const pl_vec2 d = {o->v[k].x - o0.x, o->v[k].y - o0.y};
+        x[k] = xs[k] = dot2(d, t);
+        y[k] = dot2(d, n);
+    }
+    for (int i = 1; i < m; i++) { /* insertion sort of the break points */
+        const double v = xs[i];
+        int j = i - 1;
+        while (j >= 0 && xs[j] > v) { xs[j + 1] = xs[j]; j--; }
+        xs[j + 1] = v;
+    }
+    double sum = 0;
+    for (int k = 0; k + 1 < m; k++) {
+        const double dx = xs[k + 1] - xs[k];
+        if (!(dx > 0)) continue;
+        const double d1 = section(x, y, m, xs[k] + 0.25 * dx), d3 = section(x, y, m, xs[k] + 0.75 * dx);
+        const double dl = 1.5 * d1 - 0.5 * d3, dr = 1.5 * d3 - 0.5 * d1; /* linear ends */
+        sum += dx * (dl * dl + dl * dr + dr * dr) / 3;
+    }
+    return sum;
 }
 
 /* Extent along n of disc (c, r) intersected with polygon q: attained at polygon corners
@@ -132,6 +181,7 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
         if (!(pl_clip_convex(va, w->vert_count[a], vb, w->vert_count[b], &o) > 0)) return 0;
         finish_geometry(w, &o, a, a, b, g);
         g->thick = thickness(&o, g->n);
+        g->d2 = winkler_d2(&o, g->n);
         return 1;
     }
     if (sa == PL_SHAPE_SEGMENT || sb == PL_SHAPE_SEGMENT) {
@@ -149,6 +199,7 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
         g->n = q == a ? (pl_vec2){-nw.x, -nw.y} : nw;
         g->chord = o.chord > 0 ? o.chord : sqrt(o.area);
         g->thick = thickness(&o, g->n);
+        g->d2 = winkler_d2(&o, g->n);
         return 1;
     }
     /* polygon and disc */
@@ -160,6 +211,7 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
     if (!(pl_clip_disc(w->pos[d], w->radius[d], vq, w->vert_count[q], &o) > 0)) return 0;
     finish_geometry(w, &o, q, a, b, g);
     g->thick = disc_thickness(&o, w->pos[d], w->radius[d], vq, w->vert_count[q], g->n);
+    g->d2 = -1;
     return 1;
 }
 
@@ -277,11 +329,19 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     p->normal = n;
     p->point = g.s;
     p->touching = 1;
-    /* stored energy int F_el d(delta) for an overlap growing as A ~ delta^q with the current
-     * exponent q = w h / A (h the overlap's thickness along n): F_el h / (q + 1); exact for a
-     * flat contact (q = 1, F h / 2), a corner (q = 2, F h / 3) and two round outlines (3/2) */
-    const double h = g.thick > 0 ? g.thick : depth;
-    p->elastic = fel * h * g.area / (g.area + width * h) + (kt > 0 ? 0.5 * fs * fs / kt : 0);
+    /* stored energy: the Winkler foundation's (Y / 2 l_char) int d^2 dx for polygon overlaps
+     * (equal to int F_el d(delta) for flat, tilted-flat and corner contacts); for a disc, whose
+     * overlap is not a polygon, int F_el d(delta) for an overlap growing as A ~ delta^q with the
+     * current exponent q = w h / A (h the thickness along n), i.e. F_el h / (q + 1), exact
+     * for a disc on a face (q = 3/2) and a corner in a disc (q = 2) */
+    double e_n;
+    if (g.d2 >= 0) {
+        e_n = 0.5 * Y * g.d2 / lchar;
+    } else {
+        const double h = g.thick > 0 ? g.thick : depth;
+        e_n = fel * h * g.area / (g.area + width * h);
+    }
+    p->elastic = e_n + (kt > 0 ? 0.5 * fs * fs / kt : 0);
     /* dissipation = work the dashpots take out of the bodies during this step */
     w->e_damped += (-fda * vn - fd * vt - mda * wrel) * dt;
 
