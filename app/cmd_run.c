@@ -5,6 +5,7 @@
 #include "progress.h"
 #include "report.h"
 #include "run_plan.h"
+#include "vtk_series.h"
 #include "render/drawlist.h"
 
 #include <limits.h>
@@ -23,6 +24,7 @@ static const pl_opt_spec run_specs[] = {
     {"--quiet", "-q", NULL, "no progress bar and no summary"},
     {"--trust", NULL, NULL, "lift the sandbox (only for scenes you trust)"},
     {"--hash", NULL, NULL, "print the final state hash as 'state-hash: <16 hex digits>'"},
+    {"--vtk", NULL, NULL, "also write VTK files per frame (DIR/vtk/, indexed by DIR/*.pvd) for ParaView"},
     {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
     {NULL, NULL, NULL, NULL}};
 
@@ -45,6 +47,7 @@ typedef struct run_ctx {
     pl_draw_list *overlay;
     const char *out_dir;
     pl_frame_writer *fw;
+    pl_vtk_series *vtk;
     long long start_step;
     double last_frame_time;
 } run_ctx;
@@ -80,6 +83,10 @@ static int frame(run_ctx *c)
         return -1;
     }
     c->last_frame_time = pl_world_time(c->w);
+    if (c->vtk && pl_vtk_series_add(c->vtk, c->w, err, sizeof err) != 0) {
+        print_stop(c, err);
+        return -1;
+    }
     if (pl_scene_call_hook(c->s, "on_frame", index) != 0) {
         pl_cli_print_scene_error(c->o, c->s);
         print_stop(c, "the scene's on_frame hook raised an error (above)");
@@ -166,13 +173,19 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     if (rc) return rc;
     pl_draw_list overlay;
     pl_draw_list_init(&overlay);
-    run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL,
+    run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL, NULL,
                  (long long)pl_world_step_count(w), 0};
     char err[1024];
     const char *video = pl_opts_get(o, "--video");
     c.fw = pl_frame_writer_open(out_dir, video, pl_run_plan_video_fps(&plan), err, sizeof err);
     if (!c.fw) {
         fprintf(stderr, "porelab: cannot write frames to %s/: %s\n", out_dir, err);
+        pl_draw_list_free(&overlay);
+        return PL_EXIT_FAIL;
+    }
+    if (pl_opts_has(o, "--vtk") && !(c.vtk = pl_vtk_series_open(out_dir, err, sizeof err))) {
+        fprintf(stderr, "porelab: --vtk: %s\n", err);
+        pl_frame_writer_close(&c.fw, err, sizeof err);
         pl_draw_list_free(&overlay);
         return PL_EXIT_FAIL;
     }
@@ -190,6 +203,8 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     } else if (video && rc == PL_EXIT_OK && !quiet) {
         printf("  %-15s%s\n", "video", video);
     }
+    if (c.vtk && rc == PL_EXIT_OK && !quiet) printf("  %-15s%s/*.pvd (open in ParaView)\n", "vtk", out_dir);
+    pl_vtk_series_close(&c.vtk);
     if (pl_opts_has(o, "--hash")) pl_cli_print_hash(w);
     pl_draw_list_free(&overlay);
     return rc;
@@ -198,7 +213,7 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
 static int run_imperative(const pl_opts *o, pl_scene *s)
 {
     static const char *const ignored[] = {"--until", "--steps", "--fps", "--every", "--video",
-                                          "--size", "--layers", NULL};
+                                          "--size", "--layers", "--vtk", NULL};
     for (int i = 0; ignored[i]; i++)
         if (pl_opts_has(o, ignored[i]))
             fprintf(stderr, "porelab run: note: %s is an imperative script (it returns no "

@@ -156,3 +156,13 @@ pl_cli_test(unknown_option RC 2 ARGS run scenes/demo.lua --fast
   MATCH "porelab run: unknown option '--fast'; valid options: --out --until --steps")
 pl_cli_test(unknown_command RC 2 ARGS simulate scenes/demo.lua
   MATCH "unknown command 'simulate'; valid commands: run still info flags")
+
+# VTK series for ParaView: one .vtu per frame and a .pvd index listing them.
+pl_cli_test(run_vtk RC 0
+  ARGS run scenes/five_discs.lua --steps 20 --every 10 --quiet --vtk --out ${PL_CLI_OUT}/vtk
+  EXPECT_FILE ${PL_CLI_OUT}/vtk/bodies.pvd
+  FILE_MATCH "frame_000000_bodies.vtu.*frame_000001_bodies.vtu.*frame_000002_bodies.vtu")
+
+# Boundary motions and diagnostics from Lua: bad ranges name the argument.
+pl_cli_test(bad_shake_frequency RC 1 ARGS run ${PL_BAD}/bad_shake.lua --quiet
+  MATCH "bad_shake.lua:5: shake: frequency must be > 0 Hz \\(got -2\\)")
