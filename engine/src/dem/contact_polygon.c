@@ -281,7 +281,7 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     /* relative velocity of b's material point at S with respect to a's */
     const pl_vec2 vA = point_velocity(w, a, g.s), vB = point_velocity(w, b, g.s);
     const pl_vec2 vrel = {vB.x - vA.x, vB.y - vA.y};
-    const double vn = dot2(vrel, n), vt = dot2(vrel, t);
+    const double vt = dot2(vrel, t);
 
     /* damping on the rate of the overlap area (seed 004 eq. 2) with the cutoff */
     const double sinv = w->inv_mass[a] + w->inv_mass[b];
@@ -343,7 +343,7 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     }
     p->elastic = e_n + (kt > 0 ? 0.5 * fs * fs / kt : 0);
     /* dissipation = work the dashpots take out of the bodies during this step */
-    w->e_damped += (-fda * vn - fd * vt - mda * wrel) * dt;
+    w->e_damped += fda * (g.area - area_prev) / width + (-fd * vt - mda * wrel) * dt;
 
     const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
     w->force[b].x += F.x;

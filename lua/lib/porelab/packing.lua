@@ -3,6 +3,8 @@
 --   packing.box(w, {lo = {0, 0}, hi = {1, 1}, material = steel})
 --   packing.lattice(w, {lo = .., hi = .., radius = 0.01, material = sand, hex = true})
 --   packing.rain(w, {lo = .., hi = .., radii = {0.01, 0.015}, count = 300, material = sand})
+--   packing.fill(w, {lo = .., hi = .., radius_range = {0.008, 0.012}, porosity = 0.6, material = sand})
+--   packing.compress(w, {walls = box, pressure = 1e4})
 -- Every function checks its table like the built-in constructors and reports errors at the
 -- line of the scene that called it.
 local porelab = require "porelab"
@@ -152,6 +154,173 @@ function packing.rain(w, def)
                                    velocity = def.velocity }
   end
   return bodies
+end
+
+--- A radius sampler from a size distribution given in def (used by fill):
+--   radius = r                          one size
+--   radii = {r1, r2, ...}, weights = {} discrete sizes with number fractions
+--   radius_range = {rmin, rmax}         uniform in radius
+--   lognormal = {median = m, sigma = s, min = a, max = b}  log-normal radii, truncated
+local function sampler(fn, def, rng)
+  local n = (def.radius and 1 or 0) + (def.radii and 1 or 0) + (def.radius_range and 1 or 0)
+            + (def.lognormal and 1 or 0)
+  if n ~= 1 then
+    fail(fn, "give exactly one size distribution: radius, radii (+ weights), radius_range or lognormal")
+  end
+  if def.radius then
+    local r = positive(fn, def, "radius")
+    return function() return r end, r, r
+  elseif def.radii then
+    local radii, weights = def.radii, def.weights
+    if type(radii) ~= "table" or #radii == 0 then fail(fn, "radii must be a non-empty list (m)") end
+    local lo, hi = math.huge, 0
+    for i, r in ipairs(radii) do
+      if type(r) ~= "number" or not (r > 0) then fail(fn, "radii[%d] must be > 0 (got %s)", i, tostring(r)) end
+      lo, hi = math.min(lo, r), math.max(hi, r)
+    end
+    if weights and #weights ~= #radii then fail(fn, "weights must have one entry per radius (%d)", #radii) end
+    if not weights then weights = {}; for i = 1, #radii do weights[i] = 1 end end
+    return function() return radii[rng:choose(weights)] end, lo, hi
+  elseif def.radius_range then
+    local a, b = def.radius_range[1], def.radius_range[2]
+    if type(a) ~= "number" or type(b) ~= "number" or not (a > 0 and b >= a) then
+      fail(fn, "radius_range must be {rmin, rmax} with 0 < rmin <= rmax (m)")
+    end
+    return function() return rng:uniform(a, b) end, a, b
+  else
+    local ln = def.lognormal
+    local m, sg = ln.median, ln.sigma
+    if type(m) ~= "number" or not (m > 0) then fail(fn, "lognormal.median must be > 0 (m)") end
+    if type(sg) ~= "number" or not (sg >= 0) then fail(fn, "lognormal.sigma must be >= 0") end
+    local a, b = ln.min or m * math.exp(-2 * sg), ln.max or m * math.exp(2 * sg)
+    return function()
+      while true do -- Box-Muller, truncated to [a, b]
+        local u1, u2 = rng:uniform(), rng:uniform()
+        local z = math.sqrt(-2 * math.log(1 - u1)) * math.cos(2 * math.pi * u2)
+        local r = m * math.exp(sg * z)
+        if r >= a and r <= b then return r end
+      end
+    end, a, b
+  end
+end
+
+--- Random non-overlapping discs in lo..hi (random sequential addition), to a target count or
+-- a target areal porosity of the region. Fields: lo, hi, material, one size distribution
+-- (see sampler above), count or porosity (0 < n < 1), seed, max_tries (default 1000 per
+-- grain), fixed. Returns the list of bodies and the porosity reached. Random sequential
+-- addition jams near an areal solid fraction of about 0.55 for discs of one size; denser
+-- packings need rain and settling, or compress().
+function packing.fill(w, def)
+  check_fields("fill", def, { "lo", "hi", "material", "radius", "radii", "weights", "radius_range",
+                              "lognormal", "count", "porosity", "seed", "max_tries", "fixed" })
+  local x0, y0, x1, y1 = region("fill", def)
+  if def.material == nil then fail("fill", "material is required") end
+  local rng = random.new(def.seed or 1)
+  local draw, rmin, rmax = sampler("fill", def, rng)
+  if (def.count == nil) == (def.porosity == nil) then fail("fill", "give either count or porosity") end
+  local area = (x1 - x0) * (y1 - y0)
+  local target_solid
+  if def.porosity ~= nil then
+    local n = def.porosity
+    if type(n) ~= "number" or not (n > 0 and n < 1) then fail("fill", "porosity must be in (0, 1) (got %s)", tostring(n)) end
+    target_solid = (1 - n) * area
+  elseif math.type(def.count) ~= "integer" or def.count < 1 then
+    fail("fill", "count must be an integer >= 1 (got %s)", tostring(def.count))
+  end
+  local tries = def.max_tries or 1000
+  -- spatial hash of placed discs, cell = largest diameter
+  local cell = 2 * rmax
+  local grid = {}
+  local function key(i, j) return i * 1000003 + j end
+  local placed, solid = {}, 0
+  local function free(x, y, r)
+    local ci, cj = math.floor((x - x0) / cell), math.floor((y - y0) / cell)
+    for i = ci - 1, ci + 1 do
+      for j = cj - 1, cj + 1 do
+        local list = grid[key(i, j)]
+        if list then
+          for _, d in ipairs(list) do
+            local dx, dy = x - d[1], y - d[2]
+            if dx * dx + dy * dy < (r + d[3]) ^ 2 then return false end
+          end
+        end
+      end
+    end
+    return true
+  end
+  local bodies = {}
+  while true do
+    if def.count and #bodies >= def.count then break end
+    if target_solid and solid >= target_solid then break end
+    local r = draw()
+    local ok = false
+    for _ = 1, tries do
+      local x, y = rng:uniform(x0 + r, x1 - r), rng:uniform(y0 + r, y1 - r)
+      if x1 - x0 >= 2 * r and y1 - y0 >= 2 * r and free(x, y, r) then
+        local k = key(math.floor((x - x0) / cell), math.floor((y - y0) / cell))
+        grid[k] = grid[k] or {}
+        table.insert(grid[k], { x, y, r })
+        bodies[#bodies + 1] = w:disc { center = { x, y }, radius = r, material = def.material,
+                                       fixed = def.fixed or false }
+        solid = solid + math.pi * r * r
+        ok = true
+        break
+      end
+    end
+    if not ok then
+      fail("fill", "jammed after %d grains at porosity %.3f: no free place found in %d tries "
+                   .. "(ask for fewer grains or a higher porosity, or use rain and settle)",
+           #bodies, 1 - solid / area, tries)
+    end
+  end
+  return bodies, 1 - solid / area
+end
+
+--- Isotropic compression with servo walls (seed 000 §2.1.1, seed 003 eqs. 5.11-5.12): the
+-- left, right and top walls of a box made by packing.box{..., open_top = false} push with the
+-- stress p (Pa per unit thickness: force = p x wall length) until every wall force is within
+-- tol of its target (or t_max). Fields: walls (from packing.box), pressure, gain (m/s,
+-- default 0.05), vmax (m/s, default 0.05), tol (default 0.02), t_max (s, default 5),
+-- fix (default true: walls fixed where they stop). Returns the time it took and the largest
+-- relative force error.
+function packing.compress(w, def)
+  check_fields("compress", def, { "walls", "pressure", "gain", "vmax", "tol", "t_max", "fix" })
+  local walls = def.walls
+  if type(walls) ~= "table" or not (walls.left and walls.right and walls.top and walls.bottom) then
+    fail("compress", "walls must be the table returned by packing.box{..., open_top = false}")
+  end
+  local p = positive("compress", def, "pressure")
+  local gain, vmax = def.gain or 0.05, def.vmax or 0.05
+  local tol, t_max = def.tol or 0.02, def.t_max or 5
+  local function length(b)
+    local v = b:vertices()
+    return math.sqrt((v[2][1] - v[1][1]) ^ 2 + (v[2][2] - v[1][2]) ^ 2)
+  end
+  local set = {
+    { walls.left, { 1, 0 } }, { walls.right, { -1, 0 } }, { walls.top, { 0, -1 } },
+  }
+  for _, s in ipairs(set) do
+    s[3] = p * length(s[1])
+    s[1]:servo { direction = s[2], force = s[3], gain = gain, vmax = vmax }
+  end
+  local t0, err = w:time(), math.huge
+  local check = math.max(1, math.floor(0.005 / w:dt()))
+  local calm = 0
+  while w:time() - t0 < t_max do
+    w:step(check)
+    err = 0
+    for _, s in ipairs(set) do
+      local fx, fy = s[1]:force()
+      local f = -(fx * s[2][1] + fy * s[2][2])
+      err = math.max(err, math.abs(f - s[3]) / s[3])
+    end
+    calm = err < tol and calm + 1 or 0
+    if calm >= 20 then break end -- held for 20 checks in a row
+  end
+  if def.fix ~= false then
+    for _, s in ipairs(set) do s[1]:set_motion("fixed") end
+  end
+  return w:time() - t0, err
 end
 
 return packing
