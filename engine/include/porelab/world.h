@@ -251,6 +251,24 @@ uint64_t pl_world_state_hash(const pl_world *w);
 /// Axis-aligned bounds of all bodies (for cameras).
 void pl_world_bounds(const pl_world *w, pl_vec2 *lo, pl_vec2 *hi);
 
+/* -------------------------------------------------------------- snapshots */
+
+/// A copy of the full state of a world between steps: bodies, motion laws, contacts with
+/// their history, energy tallies, parameters and flags. Restoring it and stepping gives
+/// bit-identical results to the original run (rewind in the live window, restarts).
+typedef struct pl_snapshot pl_snapshot;
+
+/// Takes a snapshot; NULL when out of memory, or when the world has a fluid model (its
+/// state is not captured yet; the message says so).
+pl_snapshot *pl_world_snapshot(pl_world *w);
+/// Restores a snapshot into the world it was taken from (same bodies, vertices and materials;
+/// a snapshot of a different world is refused with a message).
+pl_status pl_world_restore(pl_world *w, const pl_snapshot *s);
+/// Time of the snapshot, s, and its size in bytes.
+double pl_snapshot_time(const pl_snapshot *s);
+size_t pl_snapshot_bytes(const pl_snapshot *s);
+void pl_snapshot_destroy(pl_snapshot **s);
+
 /* ------------------------------------------------------------------ flags */
 
 /// Flags with the MIMES names (seed 000 Appendix B/C): TIMESTEPS, MAX_DT_CR, GRAVITY_Y, ...

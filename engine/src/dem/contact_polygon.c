@@ -16,7 +16,8 @@
  *   friction        incremental tangential spring k_t = k_S k_eff / k_N with the Coulomb cap
  *                   |F_t| <= mu F_el + c (return mapping; the regularized Coulomb law of
  *                   seed 002 §2.3.3), tangential dashpot while sticking as in the disc law
- *   point of action the overlap centroid S; moments with the lever arms S - C (Fig. 2)
+ *   point of action the overlap centroid S; moments with the lever arms S - C (Fig. 2); for a
+ *                   disc, S projected onto the line through the disc's centre along n
  * Conventions as contact_disc.c: n from a to b, t = (-n.y, n.x), force on b +F, on a -F. */
 #include "dem/contact_polygon.h"
 #include "geom/clip.h"
@@ -212,6 +213,14 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
     finish_geometry(w, &o, q, a, b, g);
     g->thick = disc_thickness(&o, w->pos[d], w->radius[d], vq, w->vert_count[q], g->n);
     g->d2 = -1;
+    /* Pressure on a circle is radial, so the resultant on the disc passes through its centre:
+     * the force acts on the line through the centre along n (the chord's perpendicular
+     * bisector), at the projection of the overlap centroid onto it. Applied at the centroid
+     * itself, a frictionless contact with a corner off the centre line would exert a constant
+     * moment on the disc and spin it up without bound. */
+    const pl_vec2 c = w->pos[d], r = {g->s.x - c.x, g->s.y - c.y};
+    const double along = dot2(r, g->n);
+    g->s = (pl_vec2){c.x + along * g->n.x, c.y + along * g->n.y};
     return 1;
 }
 

@@ -11,4 +11,5 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/flags.c
   src/dem/diagnostics.c
   src/dem/stress.c
-  src/dem/vtk.c)
+  src/dem/vtk.c
+  src/dem/snapshot.c)
