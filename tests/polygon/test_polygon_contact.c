@@ -12,7 +12,12 @@
  * Restitution: a square hitting a wall or a fixed square flat (no gravity, no friction)
  * rebounds with the coefficient of restitution e of its material, v_out = e v_in (the
  * damping ratio is calibrated for the eq. 2 cutoff, see contact_polygon.c); checked to 0.01
- * for e = 0.3, 0.5, 0.9. */
+ * for e = 0.3, 0.5, 0.9.
+ *
+ * Central force on discs: pressure on a circle is radial, so a frictionless contact cannot
+ * exert a moment on a disc, wherever a polygon corner presses on it (checked to 1e-9 of
+ * F R). Rocking: a hexagon set rocking on its face comes to rest (its kinetic energy falls
+ * below 1e-4 of the initial within 0.5 s; eq. 2 alone leaves rocking undamped, see the docs). */
 #include "harness.h"
 #include "polygon_common.h"
 
@@ -159,11 +164,54 @@ static int restitution_flat_impacts(void) {
     return 0;
 }
 
+static int frictionless_disc_gets_no_moment(void) {
+    pl_world_def d = pl_default_world_def();
+    d.gravity = (pl_vec2){0, 0};
+    pl_world *w = pl_world_create(&d);
+    const int m = poly_material(w, "grain", 2500, 1e6, 0.0, 0.3);
+    /* a fixed triangle whose corner pokes into the disc off its centre line */
+    const pl_vec2 tri[3] = {{-0.02, -0.03}, {0.01, -0.025}, {0.004, -0.008}};
+    const int t = poly_add(w, m, tri, 3, PL_MOTION_FIXED);
+    const int c = poly_add_disc(w, m, 0, 0, 0.01);
+    ENSURE(t >= 0 && c >= 0);
+    ENSURE(poly_run(w, 1));
+    const pl_body_info b = poly_body(w, c);
+    const double F = hypot(b.force.x, b.force.y);
+    fprintf(stderr, "  disc: force %.4g N, moment %.3g N m\n", F, b.torque);
+    ENSURE(F > 1);
+    ENSURE(fabs(b.torque) < 1e-9 * F * 0.01);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+static int rocking_hexagon_comes_to_rest(void) {
+    pl_world_def d = pl_default_world_def();
+    d.gravity = (pl_vec2){0, -9.81};
+    pl_world *w = pl_world_create(&d);
+    const int m = poly_material(w, "grain", 2650, 1e5, 0.5, 0.3);
+    poly_add_wall(w, m, -0.4, 0, 0.4, 0);
+    pl_vec2 v[6];
+    const double R = 0.006;
+    pl_shape_regular_polygon((pl_vec2){0, R * cos(PI / 6)}, R, 6, -PI / 2 + PI / 6, v, 6, NULL, 0);
+    const int h = poly_add(w, m, v, 6, PL_MOTION_DYNAMIC);
+    ENSURE(poly_run(w, 2000)); /* settle on the face */
+    pl_world_set_body_velocity(w, h, (pl_vec2){0, 0}, 5);
+    const double k0 = pl_world_energy(w).kinetic;
+    ENSURE(poly_run(w, (int)(0.5 / pl_world_dt(w))));
+    const double k1 = pl_world_energy(w).kinetic;
+    fprintf(stderr, "  rocking hexagon: kinetic energy %.3g J -> %.3g J after 0.5 s\n", k0, k1);
+    ENSURE(k1 < 1e-4 * k0);
+    pl_world_destroy(&w);
+    return 0;
+}
+
 int main(void) {
     RUN(square_rests_on_wall);
     RUN(square_rests_on_square);
     RUN(disc_rests_on_square);
     RUN(square_rests_on_disc_pile);
     RUN(restitution_flat_impacts);
+    RUN(frictionless_disc_gets_no_moment);
+    RUN(rocking_hexagon_comes_to_rest);
     return pl_test_report();
 }

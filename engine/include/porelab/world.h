@@ -31,6 +31,8 @@ typedef struct pl_world_def {
     double max_overlap_ratio; ///< guard: overlap / smaller body radius that stops the run; default 0.5.
     double energy_surge_ratio; ///< guard: kinetic energy rising above this multiple of the energy budget stops the run; default 10.
     int guard_interval;    ///< steps between (cheap) stability checks; default 1.
+    int track_energy;      ///< 1: exact tallies of dissipated energy (default); 0: skip them for speed
+                           ///< (energy() then reports damped and friction as 0 and no balance).
 } pl_world_def;
 
 pl_world_def pl_default_world_def(void);

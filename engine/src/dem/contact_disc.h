@@ -24,6 +24,7 @@ typedef struct pl_disc_ctx {
     pl_vec2 *restrict force;
     double *restrict torque;
     pl_tally *restrict tally;
+    int track;
     double e_shear, e_normal;
     double worst_ratio;
     int worst_a, worst_b;
@@ -78,38 +79,43 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
     const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
     const pl_vec2 Fd = {fn_d * n.x + fd * t.x, fn_d * n.y + fd * t.y};
     const pl_vec2 Fs = {fs * t.x, fs * t.y};
-    pl_tally *ta = &c->tally[a], *tb = &c->tally[b];
     c->force[b].x += F.x;
     c->force[b].y += F.y;
     c->force[a].x -= F.x;
     c->force[a].y -= F.y;
-    tb->dfx += Fd.x;
-    tb->dfy += Fd.y;
-    ta->dfx -= Fd.x;
-    ta->dfy -= Fd.y;
-    tb->sfx += Fs.x;
-    tb->sfy += Fs.y;
-    ta->sfx -= Fs.x;
-    ta->sfy -= Fs.y;
     if (wall_r) {
         /* moment on the wall from +F (wall b) or -F (wall a) about its centroid */
         const double sgn = wall_end == 1 ? 1 : -1;
-        const int wi = wall_end == 1 ? b : a;
-        pl_tally *tw = wall_end == 1 ? tb : ta, *tk = wall_end == 1 ? ta : tb;
-        const double arm = wall_end == 1 ? arm_a : arm_b;
-        c->torque[wi] += sgn * pl__cross2(*wall_r, F);
-        tw->dm += sgn * pl__cross2(*wall_r, Fd);
-        tw->sm += sgn * pl__cross2(*wall_r, Fs);
-        c->torque[wall_end == 1 ? a : b] -= arm * ft;
-        tk->dm -= arm * fd;
-        tk->sm -= arm * fs;
+        c->torque[wall_end == 1 ? b : a] += sgn * pl__cross2(*wall_r, F);
+        c->torque[wall_end == 1 ? a : b] -= (wall_end == 1 ? arm_a : arm_b) * ft;
     } else {
         c->torque[a] -= arm_a * ft;
         c->torque[b] -= arm_b * ft;
-        ta->dm -= arm_a * fd;
-        tb->dm -= arm_b * fd;
-        ta->sm -= arm_a * fs;
-        tb->sm -= arm_b * fs;
+    }
+    if (c->track) {
+        pl_tally *ta = &c->tally[a], *tb = &c->tally[b];
+        tb->dfx += Fd.x;
+        tb->dfy += Fd.y;
+        ta->dfx -= Fd.x;
+        ta->dfy -= Fd.y;
+        tb->sfx += Fs.x;
+        tb->sfy += Fs.y;
+        ta->sfx -= Fs.x;
+        ta->sfy -= Fs.y;
+        if (wall_r) {
+            const double sgn = wall_end == 1 ? 1 : -1;
+            pl_tally *tw = wall_end == 1 ? tb : ta, *tk = wall_end == 1 ? ta : tb;
+            const double arm = wall_end == 1 ? arm_a : arm_b;
+            tw->dm += sgn * pl__cross2(*wall_r, Fd);
+            tw->sm += sgn * pl__cross2(*wall_r, Fs);
+            tk->dm -= arm * fd;
+            tk->sm -= arm * fs;
+        } else {
+            ta->dm -= arm_a * fd;
+            tb->dm -= arm_b * fd;
+            ta->sm -= arm_a * fs;
+            tb->sm -= arm_b * fs;
+        }
     }
     const double ratio = delta / rmin;
     if (ratio > c->worst_ratio) {

@@ -3,7 +3,8 @@
 #include "dem/contact_polygon.h"
 
 void pl__compute_contact_forces(pl_world *w, double dt) {
-    pl_disc_ctx c = {w->pos, w->vel, w->omega, w->radius, w->force, w->torque, w->tally, 0, 0, 0, -1, -1};
+    pl_disc_ctx c = {w->pos, w->vel, w->omega, w->radius, w->force, w->torque, w->tally, w->def.track_energy,
+                     0, 0, 0, -1, -1};
     const pl_pair_params *params = w->pair_params;
     double e_poly = 0;
     w->worst_overlap_ratio = 0;

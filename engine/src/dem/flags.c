@@ -27,6 +27,7 @@ static const flag_row FLAGS[] = {
     {{"GLOBAL_DAMPING", "N s/m", "translational global damping C (seed 003 eq. 2.21)", 0, 1e30, 1}, 0},
     {{"GLOBAL_DAMPING_ROT", "N m s", "rotational global damping C* (seed 003 eq. 2.22)", 0, 1e30, 1}, 0},
     {{"LOCAL_DAMPING", "1", "non-viscous damping ratio proportional to the resultant force (seed 002 eqs. 24-29)", 0, 1, 1}, 0},
+    {{"ENERGY_TRACKING", "0/1", "1: exact tallies of the energy dissipated by dashpots and friction; 0: off, for speed", 0, 1, 1}, 1},
     /* fluid (seed 000 Appendix B.2; rows below FLUID_PRESSURES_FLAG are porelab additions).
        Owned by the fluid module; see docs/fluid.md. */
     {{"FLUIDS_ON", "0/1", "turns the pore-fluid model on (1) or off (0: no fluid work at all)", 0, 1, 1}, 0},
@@ -50,6 +51,9 @@ static const flag_row FLAGS[] = {
     {{"FLUID_KC_MODE", "0/1", "0: interpolate e^3/(1+e) between LOW (e = 0.01) and HIGH (e = 99); 1: K = FLUID_KC_C1 e^3/(1+e) clamped", 0, 1, 1}, 0},
     {{"FLUID_KC_C1", "m/s", "Kozeny-Carman constant C1 of seed 000 eq. 3.8 (FLUID_KC_MODE = 1)", 0, 1e30, 1}, 1e-2},
     {{"FLUID_DRAG", "0/1", "add the interphase drag of the porous skeleton (DESIGN §3) to the outline pressure force", 0, 1, 1}, 1},
+    /* pore pressure from skeleton volume change (docs/soil.md) */
+    {{"FLUID_CONSOLIDATION", "0/1", "1: grains moving into or out of the pores change the pore pressure: (S + n rho_f g / K_f) dh/dt - div(K grad h) = -div(v_s) (docs/soil.md)", 0, 1, 1}, 0},
+    {{"FLUID_BULK_MODULUS", "Pa", "bulk modulus K_f of the pore fluid (storage n rho_f g / K_f with FLUID_CONSOLIDATION); 0 = incompressible", 0, 1e30, 1}, 2.2e9},
     /* MIMES output flags that porelab replaces with VTK/PNG output */
     {{"EXODUSFLAG", "0/1", "EXODUS output of MIMES: not built (porelab writes VTK .vtu/.pvd and PNG instead)", 0, 1, 0}, 0},
     {{"EXODUSOUTPUTSTEP", "steps", "EXODUS output interval of MIMES: not built (use PRINT_INT)", 0, 1e12, 0}, 0},
@@ -95,6 +99,7 @@ void pl__flags_init(pl_world *w) {
     w->flag_values[find_flag("GLOBAL_DAMPING")] = w->def.global_c;
     w->flag_values[find_flag("GLOBAL_DAMPING_ROT")] = w->def.global_c_rot;
     w->flag_values[find_flag("LOCAL_DAMPING")] = w->def.local_damping;
+    w->flag_values[find_flag("ENERGY_TRACKING")] = w->def.track_energy;
 }
 
 static void list_flags(char *buf, size_t len) {
@@ -128,6 +133,7 @@ pl_status pl_world_set_flag(pl_world *w, const char *name, double v) {
     else if (!strcmp(name, "GLOBAL_DAMPING")) w->def.global_c = v;
     else if (!strcmp(name, "GLOBAL_DAMPING_ROT")) w->def.global_c_rot = v;
     else if (!strcmp(name, "LOCAL_DAMPING")) w->def.local_damping = v;
+    else if (!strcmp(name, "ENERGY_TRACKING")) w->def.track_energy = v != 0;
     w->dt = 0; /* recompute the step with the new settings */
     w->energy_initialised = 0;
     return PL_OK;

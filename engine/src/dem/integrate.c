@@ -74,6 +74,7 @@ void pl__integrate(pl_world *w, double dt) {
     int moved = 0;
     pl_vec2 *restrict pos = w->pos, *restrict vel = w->vel;
     pl_tally *restrict tl = w->tally;
+    const int track = w->def.track_energy;
     for (int i = 0; i < w->n; i++) {
         const int motion = w->motion[i];
         if (motion == PL_MOTION_FIXED) {
@@ -151,12 +152,14 @@ void pl__integrate(pl_world *w, double dt) {
             }
             moved = d2 > lim2;
         }
-        damped -= (tl[i].dfx * vm.x + tl[i].dfy * vm.y + tl[i].dm * wm) * dt;
-        work_shear += (tl[i].sfx * vm.x + tl[i].sfy * vm.y + tl[i].sm * wm) * dt;
-        tl[i] = (pl_tally){0, 0, 0, 0, 0, 0};
+        if (track) {
+            damped -= (tl[i].dfx * vm.x + tl[i].dfy * vm.y + tl[i].dm * wm) * dt;
+            work_shear += (tl[i].sfx * vm.x + tl[i].sfy * vm.y + tl[i].sm * wm) * dt;
+            tl[i] = (pl_tally){0, 0, 0, 0, 0, 0};
+        }
     }
     w->e_damped += damped;
-    w->e_friction += -work_shear - (w->e_shear - w->e_shear_prev);
+    if (track) w->e_friction += -work_shear - (w->e_shear - w->e_shear_prev);
     w->e_external += external;
     if (bad >= 0 && w->nonfinite_body < 0) w->nonfinite_body = bad;
     if (moved) w->need_rebuild = 1;

@@ -17,6 +17,7 @@ pl_world_def pl_default_world_def(void) {
     d.max_overlap_ratio = 0.5;
     d.energy_surge_ratio = 10;
     d.guard_interval = 1;
+    d.track_energy = 1;
     return d;
 }
 

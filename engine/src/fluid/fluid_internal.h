@@ -122,6 +122,9 @@ typedef struct pl_fl_params {
     double g;               /* |gravity| or standard gravity when zero */
     pl_vec2 up;             /* unit vector opposite to gravity (or +y) */
     int geometry_flag, pressures_flag;
+    /* pore pressure from skeleton volume change (fluid_consolidation.c, docs/soil.md) */
+    int consolidation;      /* 1: (S + n rho g / K_f) dh/dt - div(D grad h) = -div(v_s) */
+    double bulk_modulus;    /* K_f, Pa; <= 0: incompressible fluid */
 } pl_fl_params;
 
 /* Candidate (body, element) pair with the solid area of the body inside the element. */
@@ -182,6 +185,16 @@ struct pl_fluid {
     int pressures_started;
     pl_fluid_stats stats;
     char msg[PL_FL_MSG];
+    /* consolidation coupling (fluid_consolidation.c): all NULL / 0 while FLUID_CONSOLIDATION = 0 */
+    double *src;                /* nn volume source -div(v_s) per node (weak form), m^2/s */
+    double *stor;               /* ne specific storage per element S + n rho g / K_f, 1/m */
+    double *stor_assembled;     /* ne storage in the assembled mass matrix */
+    pl_vec2 *ref_pos;           /* body centroids at the last fluid update, m */
+    double *ref_ang;            /* body angles at the last fluid update, rad */
+    int ref_n, ref_cap;         /* bodies with a reference position */
+    int src_active;             /* src holds a nonzero source for the next solve */
+    double t_source;            /* time spent computing the source, s */
+    double last_src_abs;        /* sum |src| of the last update, m^2/s */
 };
 
 /* assembly and solution (fluid_system.c, fluid_solve.c) */
@@ -217,6 +230,22 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
 /* Pressure force and moment plus drag on body i; adds to *force, *moment. */
 void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i,
                       pl_vec2 *force, double *moment);
+
+/* consolidation (fluid_consolidation.c) */
+/* Allocates src/stor for the mesh (idempotent). */
+pl_status pl_fl_consolidation_alloc(struct pl_fluid *f);
+void pl_fl_consolidation_free(struct pl_fluid *f);
+/* Per-element specific storage S_e = FLUID_STORAGE + n_e rho_f g / K_f from the current solid
+   areas; marks the matrix dirty when a value changed. */
+void pl_fl_consolidation_storage(struct pl_fluid *f);
+/* Nodal source from the grain displacements since the reference (covers must be current);
+   dt > 0 the fluid step. Moves the reference to the current positions. */
+pl_status pl_fl_consolidation_source(struct pl_fluid *f, const pl_fl_bodies *b, const double *angle, double dt);
+/* Reference positions := current, source := 0. */
+pl_status pl_fl_consolidation_reset(struct pl_fluid *f, const pl_fl_bodies *b, const double *angle);
+/* Storage coefficient used for the time term: 1 when the storage is per element (folded into
+   the mass matrix), FLUID_STORAGE otherwise. */
+double pl_fl_storage_factor(const struct pl_fluid *f);
 
 /* default parameters (used when no world flag table is available) */
 pl_fl_params pl_fl_default_params(void);

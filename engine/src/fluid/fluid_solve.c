@@ -58,6 +58,8 @@ static pl_status theta_solve(struct pl_fluid *f, double c, double theta) {
     if (st != PL_OK) return st;
     double t0 = pl_fl_now();
     memcpy(r, s->fload, sizeof(double) * (size_t)nn);
+    if (f->src_active && f->src) /* volume source of the skeleton (fluid_consolidation.c) */
+        for (int j = 0; j < nn; j++) r[j] += f->src[j];
     if (c != 0 || theta != 1) {
         for (int j = 0; j < nn; j++) {
             double hj = h[j];
@@ -112,7 +114,7 @@ double pl_fl_explicit_dt_limit(const struct pl_fluid *f) {
         if (s->is_dir[j]) continue;
         double sum = 0;
         for (int p = s->colp[j]; p < s->colp[j + 1]; p++) sum += fabs(s->kval[p]);
-        double l = sum / (f->par.storage * s->mlump[j]);
+        double l = sum / (pl_fl_storage_factor(f) * s->mlump[j]);
         if (l > lam) lam = l;
     }
     return lam > 0 ? 2.0 / lam : INFINITY;
@@ -139,12 +141,15 @@ static pl_status explicit_advance(struct pl_fluid *f, double dt) {
     pl_fl_apply_dirichlet(f, h);
     for (int it = 0; it < nsub; it++) {
         memcpy(r, s->fload, sizeof(double) * (size_t)nn);
+        if (f->src_active && f->src)
+            for (int j = 0; j < nn; j++) r[j] += f->src[j];
         for (int j = 0; j < nn; j++) {
             double hj = h[j];
             for (int p = s->colp[j]; p < s->colp[j + 1]; p++) r[s->rowi[p]] -= s->kval[p] * hj;
         }
+        const double sf = pl_fl_storage_factor(f);
         for (int i = 0; i < nn; i++)
-            if (!s->is_dir[i]) h[i] += h_dt * r[i] / (f->par.storage * s->mlump[i]);
+            if (!s->is_dir[i]) h[i] += h_dt * r[i] / (sf * s->mlump[i]);
     }
     f->stats.last_substeps = nsub;
     f->stats.substeps += nsub;
@@ -155,14 +160,18 @@ static pl_status explicit_advance(struct pl_fluid *f, double dt) {
 
 pl_status pl_fl_advance(struct pl_fluid *f, double dt) {
     const pl_fl_params *p = &f->par;
-    if (p->method == 3 || p->storage <= 0 || !(dt > 0)) return pl_fl_solve_static(f);
+    /* under FLUID_CONSOLIDATION the storage S + n rho g / K_f sits in the mass matrix */
+    const int cons = p->consolidation && f->stor;
+    const double stor = cons ? (p->storage > 0 || p->bulk_modulus > 0 ? 1.0 : 0.0) : p->storage;
+    if (f->src_active) f->static_valid = 0; /* the source changes every update */
+    if (p->method == 3 || stor <= 0 || !(dt > 0)) return pl_fl_solve_static(f);
     f->static_valid = 0;
     f->stats.last_substeps = 0;
     f->time += dt;
     switch (p->method) {
-    case 1: return theta_solve(f, p->storage / dt, 0.5);
+    case 1: return theta_solve(f, stor / dt, 0.5);
     case 2: return explicit_advance(f, dt);
-    default: return theta_solve(f, p->storage / dt, 1.0);
+    default: return theta_solve(f, stor / dt, 1.0);
     }
 }
 

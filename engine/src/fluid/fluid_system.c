@@ -232,16 +232,19 @@ void pl_fl_assemble(struct pl_fluid *f) {
         const double A = m->area[e];
         const double dx = f->perm[e], dy = f->perm[e] * f->quads[m->tri_quad[e]].anisotropy;
         const int32_t *map = &s->emap[9 * e];
+        /* per-element storage folded into the mass matrix under FLUID_CONSOLIDATION */
+        const double Se = (f->par.consolidation && f->stor) ? f->stor[e] : 1.0;
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) {
                 s->kval[map[3 * a + b]] += (dx * bc[a] * bc[b] + dy * bc[3 + a] * bc[3 + b]) / (4 * A);
-                if (consistent) s->mval[map[3 * a + b]] += A / 12.0 * (a == b ? 2.0 : 1.0);
+                if (consistent) s->mval[map[3 * a + b]] += Se * A / 12.0 * (a == b ? 2.0 : 1.0);
             }
         for (int a = 0; a < 3; a++) {
-            s->mlump[m->tri[3 * e + a]] += A / 3.0;
-            if (!consistent) s->mval[map[4 * a]] += A / 3.0;
+            s->mlump[m->tri[3 * e + a]] += Se * A / 3.0;
+            if (!consistent) s->mval[map[4 * a]] += Se * A / 3.0;
         }
         f->perm_assembled[e] = f->perm[e];
+        if (f->stor_assembled) f->stor_assembled[e] = f->par.consolidation && f->stor ? f->stor[e] : -1;
     }
     f->k_dirty = 0;
     s->factorised = 0;

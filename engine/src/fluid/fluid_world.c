@@ -61,6 +61,8 @@ void pl__fluid_read_params(pl_world *w, pl_fl_params *p) {
     p->drag = pl__fluid_flag(w, "FLUID_DRAG", 1) != 0;
     p->geometry_flag = pl__fluid_flag(w, "FLUID_GEOMETRY_FLAG", 0) != 0;
     p->pressures_flag = pl__fluid_flag(w, "FLUID_PRESSURES_FLAG", 0) != 0;
+    p->consolidation = pl__fluid_flag(w, "FLUID_CONSOLIDATION", 0) != 0;
+    p->bulk_modulus = pl__fluid_flag(w, "FLUID_BULK_MODULUS", 2.2e9);
     p->gravity = w->def.gravity;
     double g = hypot(p->gravity.x, p->gravity.y);
     if (g > 0) {
@@ -104,6 +106,7 @@ void pl__fluid_free_state(struct pl_fluid *f) {
     f->pix_cnt = f->pix_fill = NULL;
     f->head = f->head_prev = f->perm = f->perm_assembled = f->solid = f->voidr = f->porosity = f->grad = NULL;
     f->perm_user = NULL;
+    pl_fl_consolidation_free(f);
     f->stamp = NULL;
     f->stamp_gen = 0;
     f->ncover = 0;
@@ -180,10 +183,23 @@ pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
     /* gravity or density changes move the prescribed total heads */
     pl_status st = ensure_built(w);
     if (st != PL_OK) return st;
-    if (f->par.perm_mode == 1 || f->par.drag) {
+    if (f->par.perm_mode == 1 || f->par.drag || f->par.consolidation) {
         pl_fl_bodies b = pl__fluid_world_bodies(w);
         st = pl_fl_update_porosity(f, &b);
         if (st != PL_OK) return pl__error(w, st, "fluid: out of memory in the porosity update");
+    }
+    if (f->par.consolidation) {
+        /* pore pressure from skeleton volume change (fluid_consolidation.c) */
+        pl_fl_bodies b = pl__fluid_world_bodies(w);
+        st = pl_fl_consolidation_alloc(f);
+        if (st == PL_OK)
+            st = is_static || !(dt > 0) ? pl_fl_consolidation_reset(f, &b, w->angle)
+                                         : pl_fl_consolidation_source(f, &b, w->angle, dt);
+        if (st != PL_OK) return pl__error(w, st, "fluid: out of memory in the consolidation source");
+        pl_fl_consolidation_storage(f);
+    } else if (f->src_active) {
+        f->src_active = 0;
+        f->static_valid = 0;
     }
     if (f->par.perm_mode == 2 && !f->perm_user)
         return pl__error(w, PL_ERR_STATE,

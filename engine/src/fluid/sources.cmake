@@ -8,4 +8,6 @@ list(APPEND PL_ENGINE_SOURCES
   src/fluid/fluid_forces.c
   src/fluid/fluid_world.c
   src/fluid/fluid_output.c
-  src/fluid/fluid_hook.c)
+  src/fluid/fluid_hook.c
+  src/fluid/fluid_consolidation.c
+  src/fluid/fluid_soil.c)

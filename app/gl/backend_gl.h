@@ -1,0 +1,49 @@
+/// OpenGL backend: rasterizes a draw list (app/render/drawlist.h) with OpenGL 2.1 + framebuffer
+/// objects, the same list the cairo backend rasterizes. Used by the window (SDL2) and, through
+/// OSMesa, headless (`--renderer gl`).
+///
+/// How each primitive is drawn (all in one indexed draw call, painter's order kept):
+/// - circles: a quad per disc; the fragment shader computes the exact distance to the centre
+///   and the fill and stroke coverage (analytic antialiasing, fill then stroke like cairo);
+/// - straight lines (2-point polylines) and opaque strokes: capsules (quad per segment,
+///   distance to the segment in the shader) = round caps and round joins;
+/// - translucent strokes of polygons, polylines and segment batches: quads plus round-join
+///   fans, drawn once per primitive thanks to a per-primitive depth value (GL_LESS), so a
+///   translucent stroke is not darker where its pieces overlap (cairo strokes one path);
+/// - filled polygons: fan (convex) or ear clipping (concave); Gouraud triangles: vertex colours;
+/// - arrows: butt shaft + filled head, as in the cairo backend;
+/// - text: textured quads from a FreeType glyph atlas (gl_text.h), halo glyphs first.
+/// Geometry edges are antialiased by multisampling (up to 8 samples) in an offscreen
+/// framebuffer, resolved into a single-sample one that is read back or shown in the window.
+#ifndef PORELAB_BACKEND_GL_H
+#define PORELAB_BACKEND_GL_H
+
+#include <stddef.h>
+#include "backend_cairo.h" /* pl_image */
+#include "drawlist.h"
+#include "gl_funcs.h"
+
+typedef struct pl_gl pl_gl;
+
+/// Creates the renderer in the current GL context. samples = multisample count wanted
+/// (0 = default 8, clamped to what the driver offers; 1 = none). NULL with a message.
+pl_gl *pl_gl_create(pl_gl_get_proc get_proc, int samples, char *err, size_t errlen);
+void pl_gl_destroy(pl_gl **g);
+
+/// Draws the list into the offscreen framebuffer (sized dl->camera.width x height) and
+/// resolves it. Returns 0, or -1 with a message.
+int pl_gl_render(pl_gl *g, const pl_draw_list *dl, char *err, size_t errlen);
+/// Reads the last render into img (8-bit RGBA, not premultiplied, rows top to bottom).
+int pl_gl_read(pl_gl *g, pl_image *img, char *err, size_t errlen);
+/// Copies the last render into the default framebuffer (a window of win_w x win_h pixels),
+/// at the top-left corner.
+void pl_gl_present(pl_gl *g, int win_w, int win_h);
+
+/// GL_RENDERER and GL_VERSION strings, and the multisample count in use.
+const char *pl_gl_renderer_name(const pl_gl *g);
+const char *pl_gl_version(const pl_gl *g);
+int pl_gl_samples(const pl_gl *g);
+/// Vertices and indices of the last frame (for benchmarks).
+void pl_gl_last_counts(const pl_gl *g, long *vertices, long *indices);
+
+#endif

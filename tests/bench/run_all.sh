@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Runs every benchmark on this machine and writes CSV under build/bench-results/ plus a
+# summary on stdout. Peers (LIGGGHTS, FreeFEM++) are installed from Debian when missing and
+# run in the same session, so the ratios compare like with like.
+#   tests/bench/run_all.sh            # everything (about 15 minutes on 2 cores)
+#   tests/bench/run_all.sh dem        # only the grain engine against LIGGGHTS
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+top=$(cd "$here/../.." && pwd)
+build=${PL_BUILD:-$top/build}
+out=$build/bench-results
+mkdir -p "$out"
+what=${1:-all}
+cmake --build "$build" -j2 --target bench_dem >/dev/null
+
+if [ "$what" = all ] || [ "$what" = dem ]; then
+  csv=$out/dem.csv
+  echo "label,particles,contacts,steps,seconds,particle_steps_per_s,contacts_per_s,bytes_per_particle" > "$csv"
+  echo "== grains: porelab (one core) =="
+  "$build/tests/bench_dem" --label discs_5978 --csv "$csv"
+  "$build/tests/bench_dem" --label discs_5978_no_energy --no-energy --csv "$csv"
+  "$build/tests/bench_dem" --label discs_20k --columns 98 --rows 204 --settle 0.8 --settle-dt 2e-5 --steps 5000 --csv "$csv"
+  echo "== grains: LIGGGHTS (same packing, same core count) =="
+  "$here/run_liggghts.sh" 20000 | tee "$out/liggghts.txt"
+fi
+if [ "$what" = all ] || [ "$what" = fluid ]; then
+  if [ -x "$build/tests/bench_fluid" ]; then
+    echo "== fluid: porelab and FreeFEM++ =="
+    "$here/run_freefem.sh" "$build/tests/bench_fluid" | tee "$out/fluid.txt"
+  fi
+fi
+if [ "$what" = all ] || [ "$what" = render ]; then
+  if [ -x "$build/tests/bench_render" ]; then
+    echo "== rendering =="
+    "$build/tests/bench_render" | tee "$out/render.txt"
+  fi
+fi
+echo "results in $out"
