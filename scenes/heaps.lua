@@ -2,8 +2,8 @@
 -- twice from a point source, three every 0.06 s, 2.5 cm above the top of the heap: on the
 -- left as random convex polygons inscribed in ellipses (5-9 corners, half axes 5-7.5 mm,
 -- aspect 0.6-1), on the right as discs of the same areas. Same density, stiffness,
--- restitution and friction (mu = 0.5). The polygons build a heap of about 24 degrees; the
--- discs roll apart into a low mound of about 7 degrees (tests/polygon/test_polygon_heap.c
+-- restitution and friction (mu = 0.5). The polygons build a heap of about 27 degrees; the
+-- discs roll apart into a low mound of about 3-10 degrees (tests/polygon/test_polygon_heap.c
 -- measures both on a plain floor). The polygons use the area-based contact law of seed 004 §3
 -- (docs/contact-laws-polygons.md).
 --   porelab run scenes/heaps.lua        (frames in out/heaps/; grains are added in on_frame,

@@ -37,12 +37,15 @@ static int settle(pl_world *w, int body, int max_steps) {
     return 1;
 }
 
-static int square_rests_on_wall(void) {
+/* wall_first: the wall is body a of the pair (else the square is) */
+static int square_on_wall(int wall_first) {
     pl_world *w = make_world();
     const double L = 0.02, rho = 2500, Y = 1e6, g = 9.81;
     const int m = poly_material(w, "grain", rho, Y, 0.5, 0.3);
-    const int floor = poly_add_wall(w, m, -0.1, 0, 0.1, 0);
-    const int sq = poly_add_box(w, m, 0.01, L / 2, L, L, 0, PL_MOTION_DYNAMIC);
+    int floor = -1, sq = -1;
+    if (wall_first) floor = poly_add_wall(w, m, -0.1, 0, 0.1, 0);
+    sq = poly_add_box(w, m, 0.01, L / 2, L, L, 0, PL_MOTION_DYNAMIC);
+    if (!wall_first) floor = poly_add_wall(w, m, 0.1, 0, -0.1, 0); /* the other way round too */
     ENSURE(floor >= 0 && sq >= 0);
     ENSURE(settle(w, sq, 40000));
     const pl_body_info b = poly_body(w, sq);
@@ -61,6 +64,8 @@ static int square_rests_on_wall(void) {
     pl_world_destroy(&w);
     return 0;
 }
+
+static int square_rests_on_wall(void) { return square_on_wall(1) || square_on_wall(0); }
 
 static int square_rests_on_square(void) {
     pl_world *w = make_world();

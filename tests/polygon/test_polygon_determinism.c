@@ -12,8 +12,13 @@
  * contacts (no stored energy to estimate), after the first impact of a hexagon landing on a
  * corner while spinning: |balance| < 0.5 % of the impact energy without dissipation, and < 3 %
  * with damping (e = 0.5) and friction (mu = 0.5), where the dissipated terms must be large;
- * the dissipation is booked with the start-of-step velocities (as in the disc law), so this
- * error is first order in dt: halving dt must (about) halve it. */
+ * the dissipation is booked per step (area change of the step for the normal damper,
+ * start-of-step velocities for the tangential dashpot), a first-order error in dt: halving dt
+ * must (about) halve it.
+ * A collapsing column of 160 grains (3/4 polygons, 1/4 discs, in a box), with and without
+ * friction: after 1.2 s the grains are nearly at rest (no spin-up: kinetic energy below 1e-3
+ * of its peak) and |balance| stays below 5 % of the energy dissipated (the collapse runs
+ * through violent impacts where l_char changes during each contact). */
 #include "harness.h"
 #include "polygon_common.h"
 
@@ -94,16 +99,62 @@ static int energy_balance_first_bounce(void) {
     ENSURE(first_bounce(0.5, 0.5, 0.05, &rel2, &diss2));
     fprintf(stderr, "  e = 0.5, mu = 0.5: balance %.3g (dt / 2: %.3g), dissipated %.3g of the impact energy\n",
             rel, rel2, diss);
-    /* dissipation is booked with the velocities at the start of the step, as in the disc
-     * law: a first-order error that halves with the time step */
+    /* dissipation is booked per step: a first-order error that halves with the time step */
     ENSURE(fabs(rel) < 3e-2);
     ENSURE(fabs(rel2) < 0.6 * fabs(rel) + 1e-3);
     ENSURE(diss > 0.3);
     return 0;
 }
 
+static int pile(double mu, double *rel, double *ke_ratio) {
+    pl_world_def d = pl_default_world_def();
+    d.gravity = (pl_vec2){0, -9.81};
+    pl_world *w = pl_world_create(&d);
+    const int m = poly_material(w, "grain", 2650, 1e5, mu, 0.3);
+    poly_add_wall(w, m, -0.1, 0, 0.1, 0);
+    poly_add_wall(w, m, -0.1, 0.5, -0.1, 0);
+    poly_add_wall(w, m, 0.1, 0, 0.1, 0.5);
+    pl_rng rng;
+    pl_rng_seed(&rng, 11);
+    const pl_random_polygon_def pd = pl_default_random_polygon_def();
+    for (int k = 0; k < 160; k++) {
+        const pl_vec2 c = {-0.088 + 0.016 * (k % 10), 0.01 + 0.016 * (k / 10)};
+        if (k % 4 == 3) {
+            poly_add_disc(w, m, c.x, c.y, 0.006);
+        } else {
+            pl_vec2 v[64];
+            const int n = pl_shape_random_polygon(&pd, &rng, c, v, 64, NULL, 0);
+            poly_add(w, m, v, n, PL_MOTION_DYNAMIC);
+        }
+    }
+    const int chunk = (int)(0.02 / pl_world_dt(w));
+    double peak = 0;
+    int ok = 1;
+    for (int s = 0; s < 60 && ok; s++) {
+        ok = poly_run(w, chunk);
+        peak = fmax(peak, pl_world_energy(w).kinetic);
+    }
+    const pl_energy e = pl_world_energy(w);
+    *rel = e.balance / (e.damped + e.friction);
+    *ke_ratio = e.kinetic / peak;
+    pl_world_destroy(&w);
+    return ok;
+}
+
+static int energy_balance_pile(void) {
+    double rel0, ke0, rel1, ke1;
+    ENSURE(pile(0.0, &rel0, &ke0));
+    ENSURE(pile(0.5, &rel1, &ke1));
+    fprintf(stderr, "  160-grain collapse: balance / dissipated = %.3g (mu 0), %.3g (mu 0.5); "
+            "final / peak kinetic energy %.2g, %.2g\n", rel0, rel1, ke0, ke1);
+    ENSURE(fabs(rel0) < 0.05 && fabs(rel1) < 0.05);
+    ENSURE(ke0 < 1e-3 && ke1 < 1e-3);
+    return 0;
+}
+
 int main(void) {
     RUN(same_scene_same_hash);
     RUN(energy_balance_first_bounce);
+    RUN(energy_balance_pile);
     return pl_test_report();
 }

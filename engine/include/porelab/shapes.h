@@ -10,6 +10,7 @@
 #define PORELAB_SHAPES_H
 
 #include "porelab/core.h"
+#include "porelab/world.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -40,7 +41,7 @@ int pl_rng_int(pl_rng *rng, int lo, int hi);
 /// coordinates, no repeated vertices, counter-clockwise, strictly convex (no collinear or
 /// reflex corner) and a non-degenerate area. Returns PL_OK or PL_ERR_ARG with a message
 /// naming the offending vertex and what to change.
-#define PL_SHAPE_MAX_VERTICES 64 /* equals PL_MAX_POLY_VERTICES in world.h */
+#define PL_SHAPE_MAX_VERTICES PL_MAX_POLY_VERTICES
 pl_status pl_polygon_check(const pl_vec2 *v, int n, char *err, size_t err_cap);
 
 /* ----------------------------------------------------------- mass properties */

@@ -18,6 +18,8 @@
  *                   seed 002 §2.3.3), tangential dashpot while sticking as in the disc law
  *   point of action the overlap centroid S; moments with the lever arms S - C (Fig. 2); for a
  *                   disc, S projected onto the line through the disc's centre along n
+ *   energy          stored: Winkler (Y / 2 l_char) int d(x)^2 dx (polygon overlaps); dissipated:
+ *                   F_da dA / w per step, dashpot and couple work with start-of-step velocities
  * Conventions as contact_disc.c: n from a to b, t = (-n.y, n.x), force on b +F, on a -F. */
 #include "dem/contact_polygon.h"
 #include "geom/clip.h"
@@ -25,6 +27,11 @@
 
 static inline double cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y * f.x; }
 static inline double dot2(pl_vec2 a, pl_vec2 b) { return a.x * b.x + a.y * b.y; }
+/* plain min/max and length: the library fmin/fmax/hypot are calls with NaN and overflow
+ * handling this hot path does not need (non-finite states are stopped by the guards) */
+static inline double mn(double a, double b) { return a < b ? a : b; }
+static inline double mx(double a, double b) { return a > b ? a : b; }
+static inline double len2(double x, double y) { return sqrt(x * x + y * y); }
 
 static inline void untouch(pl_pair *p) {
     p->touching = 0;
@@ -58,56 +65,46 @@ static double thickness(const pl_overlap *o, pl_vec2 n) {
     double lo = INFINITY, hi = -INFINITY;
     for (int k = 0; k < o->n; k++) {
         const double s = dot2(o->v[k], n);
-        lo = fmin(lo, s);
-        hi = fmax(hi, s);
+        lo = mn(lo, s);
+        hi = mx(hi, s);
     }
     return o->n > 0 ? hi - lo : 0;
-}
-
-/* Cross-section d(x) of the overlap polygon along n at x along t (the thickness of the
- * overlap at that point of the contact), from the edges spanning x. */
-static double section(const double *x, const double *y, int m, double xq) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (int k = 0; k < m; k++) {
-        const int k1 = k + 1 < m ? k + 1 : 0;
-        const double x0 = x[k], x1 = x[k1];
-        if ((x0 <= xq && xq <= x1) || (x1 <= xq && xq <= x0)) {
-            const double yq = x1 != x0 ? y[k] + (y[k1] - y[k]) * (xq - x0) / (x1 - x0) : y[k];
-            lo = fmin(lo, yq);
-            hi = fmax(hi, yq);
-        }
-    }
-    return hi > lo ? hi - lo : 0;
 }
 
 /* Winkler integral of d(x)^2 over the contact: with springs of stiffness Y / l_char per unit
  * length across the width, each compressed by the local thickness d(x) of the overlap, the
  * resultant is (Y / l_char) int d dx = Y A / l_char (eq. 1, at the overlap centroid) and the
- * stored energy is (Y / 2 l_char) int d^2 dx. d is linear between the corners' x, so each
- * piece integrates exactly by Simpson's rule from two interior samples. */
+ * stored energy is (Y / 2 l_char) int d^2 dx. In coordinates x along t, y along n the convex
+ * overlap splits at its leftmost and rightmost corners into two x-monotone chains; d is their
+ * difference, linear between consecutive break points, so each piece integrates exactly:
+ * dx (dl^2 + dl dr + dr^2) / 3. */
 static double winkler_d2(const pl_overlap *o, pl_vec2 n) {
     const int m = o->n;
     if (m < 3 || m > PL_CLIP_MAX_OUT) return 0;
     const pl_vec2 t = {-n.y, n.x}, o0 = o->v[0];
-    double x[PL_CLIP_MAX_OUT], y[PL_CLIP_MAX_OUT], xs[PL_CLIP_MAX_OUT];
+    double x[PL_CLIP_MAX_OUT], y[PL_CLIP_MAX_OUT];
+    int kmin = 0, kmax = 0;
     for (int k = 0; k < m; k++) {
         const pl_vec2 d = {o->v[k].x - o0.x, o->v[k].y - o0.y};
-        x[k] = xs[k] = dot2(d, t);
+        x[k] = dot2(d, t);
         y[k] = dot2(d, n);
+        if (x[k] < x[kmin]) kmin = k;
+        if (x[k] > x[kmax]) kmax = k;
     }
-    for (int i = 1; i < m; i++) { /* insertion sort of the break points */
-        const double v = xs[i];
-        int j = i - 1;
-        while (j >= 0 && xs[j] > v) { xs[j + 1] = xs[j]; j--; }
-        xs[j + 1] = v;
-    }
-    double sum = 0;
-    for (int k = 0; k + 1 < m; k++) {
-        const double dx = xs[k + 1] - xs[k];
-        if (!(dx > 0)) continue;
-        const double d1 = section(x, y, m, xs[k] + 0.25 * dx), d3 = section(x, y, m, xs[k] + 0.75 * dx);
-        const double dl = 1.5 * d1 - 0.5 * d3, dr = 1.5 * d3 - 0.5 * d1; /* linear ends */
-        sum += dx * (dl * dl + dl * dr + dr * dr) / 3;
+    /* chain A walks forward from kmin to kmax, chain B backward */
+    int ia = kmin, ib = kmin;
+    int na = ia + 1 < m ? ia + 1 : 0, nb = ib > 0 ? ib - 1 : m - 1;
+    double X = x[kmin], sum = 0;
+    for (int guard = 0; guard < 2 * m && X < x[kmax]; guard++) {
+        while (x[na] <= X && ia != kmax) { ia = na; na = ia + 1 < m ? ia + 1 : 0; }
+        while (x[nb] <= X && ib != kmax) { ib = nb; nb = ib > 0 ? ib - 1 : m - 1; }
+        if (ia == kmax || ib == kmax) break;
+        const double X1 = mn(x[na], x[nb]);
+        const double sa = (y[na] - y[ia]) / (x[na] - x[ia]), sb = (y[nb] - y[ib]) / (x[nb] - x[ib]);
+        const double dl = fabs(y[ia] + sa * (X - x[ia]) - (y[ib] + sb * (X - x[ib])));
+        const double dr = fabs(y[ia] + sa * (X1 - x[ia]) - (y[ib] + sb * (X1 - x[ib])));
+        sum += (X1 - X) * (dl * dl + dl * dr + dr * dr) / 3;
+        X = X1;
     }
     return sum;
 }
@@ -121,14 +118,14 @@ static double disc_thickness(const pl_overlap *o, pl_vec2 c, double r, const pl_
     for (int k = 0; k < nq; k++) {
         const double dx = q[k].x - c.x, dy = q[k].y - c.y;
         if (dx * dx + dy * dy <= r * r) {
-            lo = fmin(lo, dot2(q[k], n));
-            hi = fmax(hi, dot2(q[k], n));
+            lo = mn(lo, dot2(q[k], n));
+            hi = mx(hi, dot2(q[k], n));
         }
     }
     const int m = o->cross_n < PL_CLIP_MAX_CROSS ? o->cross_n : PL_CLIP_MAX_CROSS;
     for (int k = 0; k < m; k++) {
-        lo = fmin(lo, dot2(o->cross[k], n));
-        hi = fmax(hi, dot2(o->cross[k], n));
+        lo = mn(lo, dot2(o->cross[k], n));
+        hi = mx(hi, dot2(o->cross[k], n));
     }
     for (int sgn = -1; sgn <= 1; sgn += 2) {
         const pl_vec2 e = {c.x + sgn * r * n.x, c.y + sgn * r * n.y};
@@ -138,8 +135,8 @@ static double disc_thickness(const pl_overlap *o, pl_vec2 c, double r, const pl_
             if ((b.x - a.x) * (e.y - a.y) - (b.y - a.y) * (e.x - a.x) < 0) inside = 0;
         }
         if (inside) {
-            lo = fmin(lo, dot2(e, n));
-            hi = fmax(hi, dot2(e, n));
+            lo = mn(lo, dot2(e, n));
+            hi = mx(hi, dot2(e, n));
         }
     }
     return hi > lo ? hi - lo : 0;
@@ -150,7 +147,7 @@ static int finish_geometry(const pl_world *w, const pl_overlap *o, int first, in
                            geo *g) {
     g->area = o->area;
     g->s = o->centroid;
-    const double cl = hypot(o->chord_vec.x, o->chord_vec.y);
+    const double cl = len2(o->chord_vec.x, o->chord_vec.y);
     const double scale = w->radius[a] + w->radius[b];
     if (cl > 1e-12 * scale) {
         g->n = (pl_vec2){o->chord_vec.y / cl, -o->chord_vec.x / cl};
@@ -160,7 +157,7 @@ static int finish_geometry(const pl_world *w, const pl_overlap *o, int first, in
         /* one outline inside the other, or a symmetric crossing with no preferred
          * direction: push along the line of the centroids */
         const pl_vec2 d = {w->pos[b].x - w->pos[a].x, w->pos[b].y - w->pos[a].y};
-        const double l = hypot(d.x, d.y);
+        const double l = len2(d.x, d.y);
         g->n = l > 0 ? (pl_vec2){d.x / l, d.y / l} : (pl_vec2){0, 1};
         g->chord = sqrt(o->area);
     }
@@ -179,6 +176,12 @@ static int contact_geometry(const pl_world *w, const pl_pair *p, geo *g) {
         if (dx * dx + dy * dy >= rs * rs) return 0;
         const pl_vec2 *va = &w->verts_world[w->vert_offset[a]];
         const pl_vec2 *vb = &w->verts_world[w->vert_offset[b]];
+        /* cheap separating-axis test along the line of the centroids before clipping: most
+         * neighbour pairs that do not touch are separated along it */
+        double amax = -INFINITY, bmin = INFINITY;
+        for (int k = 0; k < w->vert_count[a]; k++) amax = mx(amax, (va[k].x - ca.x) * dx + (va[k].y - ca.y) * dy);
+        for (int k = 0; k < w->vert_count[b]; k++) bmin = mn(bmin, (vb[k].x - ca.x) * dx + (vb[k].y - ca.y) * dy);
+        if (amax <= bmin) return 0;
         if (!(pl_clip_convex(va, w->vert_count[a], vb, w->vert_count[b], &o) > 0)) return 0;
         finish_geometry(w, &o, a, a, b, g);
         g->thick = thickness(&o, g->n);
@@ -245,7 +248,7 @@ static double cutoff_zeta(double zeta) {
     if (!(zeta > 0)) return 0;
     if (zeta >= 1) zeta = 0.999999;
     const double e = exp(-3.14159265358979323846 * zeta / sqrt(1 - zeta * zeta));
-    if (e <= 0.02) return zeta_times_e[0] / fmax(e, 1e-6);
+    if (e <= 0.02) return zeta_times_e[0] / mx(e, 1e-6);
     const double x = e / 0.02 - 1;
     int i = (int)x;
     if (i >= 49) return 0;
@@ -258,8 +261,8 @@ static double cutoff_zeta(double zeta) {
  * driven into the overlap cannot make the force infinite (the overlap guard fires first). */
 static double char_length(const pl_world *w, int a, int b, pl_vec2 s, int wall) {
     const int sa = w->shape[a];
-    const double l1 = hypot(s.x - w->pos[a].x, s.y - w->pos[a].y);
-    const double l2 = hypot(s.x - w->pos[b].x, s.y - w->pos[b].y);
+    const double l1 = len2(s.x - w->pos[a].x, s.y - w->pos[a].y);
+    const double l2 = len2(s.x - w->pos[b].x, s.y - w->pos[b].y);
     double lc, rmin;
     if (wall) {
         const int q = sa == PL_SHAPE_SEGMENT ? b : a;
@@ -267,9 +270,9 @@ static double char_length(const pl_world *w, int a, int b, pl_vec2 s, int wall) 
         rmin = w->radius[q];
     } else {
         lc = l1 + l2 > 0 ? 4 * l1 * l2 / (l1 + l2) : 0;
-        rmin = fmin(w->radius[a], w->radius[b]);
+        rmin = mn(w->radius[a], w->radius[b]);
     }
-    return fmax(lc, 0.05 * rmin);
+    return mx(lc, 0.05 * rmin);
 }
 
 double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt) {
@@ -282,7 +285,7 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     const pl_vec2 n = g.n, t = {-n.y, n.x};
     const double Y = pp->kn;
     const double lchar = char_length(w, a, b, g.s, g.wall);
-    const double width = fmax(g.chord, 1e-9 * (w->radius[a] + w->radius[b]));
+    const double width = mx(g.chord, 1e-9 * (w->radius[a] + w->radius[b]));
     const double fel = Y * g.area / lchar;           /* seed 004 eq. 1 */
     const double keff = Y * width / lchar;           /* dF_el / d(depth), depth = A / w */
     const double depth = g.area / width;
@@ -365,12 +368,12 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     w->torque[a] -= cross2(ra, F) + mda;
 
     const double rmin = g.wall ? w->radius[w->shape[a] == PL_SHAPE_SEGMENT ? b : a]
-                               : fmin(w->radius[a], w->radius[b]);
+                               : mn(w->radius[a], w->radius[b]);
     const double ratio = rmin > 0 ? depth / rmin : 0;
     if (ratio > w->worst_overlap_ratio) {
         w->worst_overlap_ratio = ratio;
         w->worst_a = a;
         w->worst_b = b;
     }
-    return fmax(keff, kt);
+    return mx(keff, kt);
 }

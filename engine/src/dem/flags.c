@@ -52,6 +52,7 @@ static const flag_row FLAGS[] = {
     {{"FLUID_KC_C1", "m/s", "Kozeny-Carman constant C1 of seed 000 eq. 3.8 (FLUID_KC_MODE = 1)", 0, 1e30, 1}, 1e-2},
     {{"FLUID_DRAG", "0/1", "add the interphase drag of the porous skeleton (DESIGN §3) to the outline pressure force", 0, 1, 1}, 1},
     /* pore pressure from skeleton volume change (docs/soil.md) */
+    {{"FLUID_FORCE_REUSE", "0/1", "1: the fluid force on each body is computed at fluid updates (every FLUID_SOLVE_TIMESTEPS steps) and reused in between; 0: every grain step", 0, 1, 1}, 0},
     {{"FLUID_CONSOLIDATION", "0/1", "1: grains moving into or out of the pores change the pore pressure: (S + n rho_f g / K_f) dh/dt - div(K grad h) = -div(v_s) (docs/soil.md)", 0, 1, 1}, 0},
     {{"FLUID_BULK_MODULUS", "Pa", "bulk modulus K_f of the pore fluid (storage n rho_f g / K_f with FLUID_CONSOLIDATION); 0 = incompressible", 0, 1e30, 1}, 2.2e9},
     /* MIMES output flags that porelab replaces with VTK/PNG output */

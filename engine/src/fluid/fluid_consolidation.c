@@ -33,6 +33,9 @@ double pl_fl_storage_factor(const struct pl_fluid *f) {
 
 void pl_fl_consolidation_free(struct pl_fluid *f) {
     free(f->src); free(f->stor); free(f->stor_assembled); free(f->ref_pos); free(f->ref_ang);
+    free(f->vbar); free(f->elem_bedge); free(f->bchord);
+    f->vbar = f->bchord = NULL;
+    f->elem_bedge = NULL;
     f->src = f->stor = f->stor_assembled = NULL;
     f->ref_pos = NULL;
     f->ref_ang = NULL;
@@ -45,8 +48,23 @@ pl_status pl_fl_consolidation_alloc(struct pl_fluid *f) {
     f->src = calloc((size_t)f->mesh.nn, sizeof(double));
     f->stor = calloc((size_t)f->mesh.ne, sizeof(double));
     f->stor_assembled = malloc(sizeof(double) * (size_t)f->mesh.ne);
-    if (!f->src || !f->stor || !f->stor_assembled) return PL_ERR_NOMEM;
+    f->vbar = calloc(2 * (size_t)f->mesh.ne, sizeof(double));
+    f->elem_bedge = malloc(sizeof(int32_t) * 3 * (size_t)f->mesh.ne);
+    f->bchord = calloc((size_t)f->mesh.nbe + 1, sizeof(double));
+    if (!f->src || !f->stor || !f->stor_assembled || !f->vbar || !f->elem_bedge || !f->bchord) return PL_ERR_NOMEM;
     for (int e = 0; e < f->mesh.ne; e++) f->stor_assembled[e] = -1;
+    /* boundary edges of each element (an oriented boundary edge a->b belongs to the element
+       that has a->b among its counter-clockwise edges); found once per mesh */
+    const pl_fl_mesh *m = &f->mesh;
+    for (int k = 0; k < 3 * m->ne; k++) f->elem_bedge[k] = -1;
+    for (int e = 0; e < m->ne; e++) {
+        const int32_t *v = &m->tri[3 * e];
+        for (int k = 0; k < m->nbe; k++) {
+            int a = m->bedge[2 * k], b = m->bedge[2 * k + 1];
+            for (int q = 0; q < 3; q++)
+                if (v[q] == a && v[(q + 1) % 3] == b) f->elem_bedge[3 * e + q] = k;
+        }
+    }
     f->k_dirty = 1; /* the mass matrix now carries the storage */
     return PL_OK;
 }
@@ -134,6 +152,38 @@ static double clip_centroid(const pl_vec2 t[3], const pl_vec2 *v, int n, pl_vec2
     return 0.5 * a2;
 }
 
+/* Length of segment a-b inside the disc (c, r). */
+static double chord_disc(pl_vec2 a, pl_vec2 b, pl_vec2 c, double r) {
+    pl_vec2 d = {b.x - a.x, b.y - a.y}, o = {a.x - c.x, a.y - c.y};
+    double A = d.x * d.x + d.y * d.y, B = o.x * d.x + o.y * d.y, C = o.x * o.x + o.y * o.y - r * r;
+    double disc = B * B - A * C;
+    if (A <= 0 || disc <= 0) return 0;
+    double sq = sqrt(disc), t1 = (-B - sq) / A, t2 = (-B + sq) / A;
+    if (t1 < 0) t1 = 0;
+    if (t2 > 1) t2 = 1;
+    return t2 > t1 ? (t2 - t1) * sqrt(A) : 0;
+}
+
+/* Length of segment a-b inside a convex counter-clockwise polygon. */
+static double chord_poly(pl_vec2 a, pl_vec2 b, const pl_vec2 *v, int n) {
+    double t0 = 0, t1 = 1;
+    pl_vec2 d = {b.x - a.x, b.y - a.y};
+    for (int k = 0; k < n && t0 < t1; k++) {
+        pl_vec2 p = v[k], q = v[(k + 1) % n];
+        pl_vec2 e = {q.x - p.x, q.y - p.y};
+        double sa = e.x * (a.y - p.y) - e.y * (a.x - p.x); /* >= 0 inside */
+        double sd = e.x * d.y - e.y * d.x;
+        if (sd == 0) {
+            if (sa < 0) return 0;
+        } else {
+            double t = -sa / sd;
+            if (sd > 0) { if (t > t0) t0 = t; }
+            else if (t < t1) t1 = t;
+        }
+    }
+    return t1 > t0 ? (t1 - t0) * sqrt(d.x * d.x + d.y * d.y) : 0;
+}
+
 pl_status pl_fl_consolidation_source(struct pl_fluid *f, const pl_fl_bodies *b, const double *angle, double dt) {
     double t0 = pl_fl_now();
     const pl_fl_mesh *m = &f->mesh;
@@ -146,9 +196,12 @@ pl_status pl_fl_consolidation_source(struct pl_fluid *f, const pl_fl_bodies *b, 
         f->ref_ang[i] = angle ? angle[i] : 0;
     }
     f->ref_n = b->n;
-    /* covers are sorted by body: each (body, element) piece adds its solid flux to the
-       element's three nodes */
+    /* covers are sorted by body: each (body, element) piece adds its solid flux J to its
+       element; pieces in elements on the mesh boundary also measure how much of the boundary
+       edge the body covers */
     memset(f->src, 0, sizeof(double) * (size_t)nn);
+    memset(f->vbar, 0, sizeof(double) * 2 * (size_t)m->ne);
+    memset(f->bchord, 0, sizeof(double) * (size_t)m->nbe);
     const double inv_dt = 1.0 / dt;
     for (int i = 0; i < f->cover_bodies && i < b->n; i++) {
         int k0 = f->body_cover_start[i], k1 = f->body_cover_start[i + 1];
@@ -156,29 +209,62 @@ pl_status pl_fl_consolidation_source(struct pl_fluid *f, const pl_fl_bodies *b, 
         pl_vec2 d = {b->pos[i].x - f->ref_pos[i].x, b->pos[i].y - f->ref_pos[i].y};
         double dth = 0;
         if (b->shape[i] == PL_SHAPE_POLYGON && angle) dth = angle[i] - f->ref_ang[i];
-        if (d.x == 0 && d.y == 0 && dth == 0) continue;
+        const pl_vec2 *pv = b->shape[i] == PL_SHAPE_POLYGON ? &b->verts[b->vert_offset[i]] : NULL;
+        const int pn = pv ? b->vert_count[i] : 0;
         for (int k = k0; k < k1; k++) {
             const pl_fl_cover *cv = &f->cover[k];
             int e = cv->elem;
             double a = cv->area;
             if (!(a > 0)) continue;
-            pl_vec2 dd = d;
             const int32_t *v = &m->tri[3 * e];
+            for (int q = 0; q < 3; q++) {
+                int be = f->elem_bedge[3 * e + q];
+                if (be < 0) continue;
+                pl_vec2 p0 = m->xy[m->bedge[2 * be]], p1 = m->xy[m->bedge[2 * be + 1]];
+                f->bchord[be] += pv ? chord_poly(p0, p1, pv, pn) : chord_disc(p0, p1, b->pos[i], b->radius[i]);
+            }
+            if (d.x == 0 && d.y == 0 && dth == 0) continue;
+            pl_vec2 dd = d;
             if (dth != 0) {
                 /* displacement of the piece's centroid by the rotation about the body centroid */
                 pl_vec2 t[3] = {m->xy[v[0]], m->xy[v[1]], m->xy[v[2]]};
                 pl_vec2 c = b->pos[i];
-                clip_centroid(t, &b->verts[b->vert_offset[i]], b->vert_count[i], &c);
+                clip_centroid(t, pv, pn, &c);
                 dd.x += -dth * (c.y - b->pos[i].y);
                 dd.y += dth * (c.x - b->pos[i].x);
             }
-            double A = m->area[e], As = f->solid[e];
-            if (As < 0.01 * A) As = 0.01 * A;
-            /* J_e piece = a * dd / dt; node i of e gets (b_i Jx + c_i Jy) / (2 As) */
-            double jx = a * dd.x * inv_dt, jy = a * dd.y * inv_dt;
-            const double *bc = &m->bc[6 * e];
-            double s = 0.5 / As;
-            for (int q = 0; q < 3; q++) f->src[v[q]] += s * (bc[q] * jx + bc[3 + q] * jy);
+            f->vbar[2 * e] += a * dd.x * inv_dt;
+            f->vbar[2 * e + 1] += a * dd.y * inv_dt;
+        }
+    }
+    /* vbar_e = J_e / A_s,e; node i of e gets A_e grad N_i . vbar_e = (b_i vx + c_i vy) / 2 */
+    for (int e = 0; e < m->ne; e++) {
+        double A = m->area[e], As = f->solid[e];
+        if (As < 0.01 * A) As = 0.01 * A;
+        double vx = f->vbar[2 * e] / As, vy = f->vbar[2 * e + 1] / As;
+        f->vbar[2 * e] = vx;
+        f->vbar[2 * e + 1] = vy;
+        if (vx == 0 && vy == 0) continue;
+        const int32_t *v = &m->tri[3 * e];
+        const double *bc = &m->bc[6 * e];
+        for (int q = 0; q < 3; q++) f->src[v[q]] += 0.5 * (bc[q] * vx + bc[3 + q] * vy);
+    }
+    /* boundary term -int N_i vbar . n ds of the weak form, on the part of each boundary edge
+       covered by solids (a body crossing the mesh boundary, e.g. a piston: the skeleton outside
+       moves with it); elsewhere the boundary is a fixed wall for the skeleton (term dropped) */
+    for (int e = 0; e < m->ne; e++) {
+        for (int q = 0; q < 3; q++) {
+            int be = f->elem_bedge[3 * e + q];
+            if (be < 0 || !(f->bchord[be] > 0)) continue;
+            int ia = m->bedge[2 * be], ib = m->bedge[2 * be + 1];
+            pl_vec2 p0 = m->xy[ia], p1 = m->xy[ib];
+            double L = hypot(p1.x - p0.x, p1.y - p0.y);
+            double cover = f->bchord[be] < L ? f->bchord[be] : L;
+            /* outward normal of a counter-clockwise edge times its length: (dy, -dx) */
+            double fl = f->vbar[2 * e] * (p1.y - p0.y) - f->vbar[2 * e + 1] * (p1.x - p0.x);
+            double t = 0.5 * fl * cover / L;
+            f->src[ia] -= t;
+            f->src[ib] -= t;
         }
     }
     for (int i = 0; i < b->n; i++) {

@@ -123,6 +123,7 @@ typedef struct pl_fl_params {
     pl_vec2 up;             /* unit vector opposite to gravity (or +y) */
     int geometry_flag, pressures_flag;
     /* pore pressure from skeleton volume change (fluid_consolidation.c, docs/soil.md) */
+    int force_reuse;        /* 1: fluid forces computed at fluid updates and reused in between */
     int consolidation;      /* 1: (S + n rho g / K_f) dh/dt - div(D grad h) = -div(v_s) */
     double bulk_modulus;    /* K_f, Pa; <= 0: incompressible fluid */
 } pl_fl_params;
@@ -192,9 +193,14 @@ struct pl_fluid {
     pl_vec2 *ref_pos;           /* body centroids at the last fluid update, m */
     double *ref_ang;            /* body angles at the last fluid update, rad */
     int ref_n, ref_cap;         /* bodies with a reference position */
+    double *vbar;               /* 2 ne mean skeleton velocity per element (last update), m/s */
+    int32_t *elem_bedge;        /* 3 ne: boundary edges of each element (-1: none) */
+    double *bchord;             /* nbe length of each boundary edge covered by solids, m */
     int src_active;             /* src holds a nonzero source for the next solve */
     double t_source;            /* time spent computing the source, s */
     double last_src_abs;        /* sum |src| of the last update, m^2/s */
+    double *fcache;             /* 3 per body: fluid force x, y and moment of the last update */
+    int fcache_n, fcache_cap;   /* bodies with a cached force */
 };
 
 /* assembly and solution (fluid_system.c, fluid_solve.c) */

@@ -62,6 +62,7 @@ void pl__fluid_read_params(pl_world *w, pl_fl_params *p) {
     p->geometry_flag = pl__fluid_flag(w, "FLUID_GEOMETRY_FLAG", 0) != 0;
     p->pressures_flag = pl__fluid_flag(w, "FLUID_PRESSURES_FLAG", 0) != 0;
     p->consolidation = pl__fluid_flag(w, "FLUID_CONSOLIDATION", 0) != 0;
+    p->force_reuse = pl__fluid_flag(w, "FLUID_FORCE_REUSE", 0) != 0;
     p->bulk_modulus = pl__fluid_flag(w, "FLUID_BULK_MODULUS", 2.2e9);
     p->gravity = w->def.gravity;
     double g = hypot(p->gravity.x, p->gravity.y);

@@ -1,10 +1,13 @@
 /* Overlap kernels (see clip.h). All kernels work in coordinates relative to the first
  * vertex of the first outline, so bodies far from the origin keep their precision. */
 #include "geom/clip.h"
+#include "porelab/world.h"
 #include <math.h>
 #include <string.h>
 
 #define PI_CLIP 3.14159265358979323846
+
+_Static_assert(PL_CLIP_MAX_IN >= PL_MAX_POLY_VERTICES, "clip buffers smaller than a polygon body");
 
 static inline pl_vec2 v_sub(pl_vec2 a, pl_vec2 b) { return (pl_vec2){a.x - b.x, a.y - b.y}; }
 static inline pl_vec2 v_add(pl_vec2 a, pl_vec2 b) { return (pl_vec2){a.x + b.x, a.y + b.y}; }
@@ -142,7 +145,13 @@ double pl_clip_convex(const pl_vec2 *p, int np, const pl_vec2 *q, int nq, pl_ove
         pl_vec2 *t = cur; cur = nxt; nxt = t;
         int *tl = lc; lc = ln; ln = tl;
     }
-    const double scale = fmax(extent(p, np, o), extent(q, nq, o));
+    /* round-off of the clipped points scales with their distance from o */
+    double scale = 0;
+    for (int k = 0; k < n; k++) {
+        const double ax = fabs(cur[k].x), ay = fabs(cur[k].y);
+        scale = ax > scale ? ax : scale;
+        scale = ay > scale ? ay : scale;
+    }
     n = dedupe(cur, lc, n, 1e-13 * scale);
     if (n < 3) return 0;
     pl_vec2 c;
