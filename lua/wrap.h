@@ -50,6 +50,18 @@ void pl_lua_check_status(lua_State *L, const pl_world *w, int s, const char *fn)
  * disc/rectangle/polygon/wall constructors). Applies a prescribed velocity when asked. */
 void pl_lua_add_body(lua_State *L, int world_idx, const pl_body_def *def, const char *fn);
 
+/* Body constructor helpers shared by wrap_body.c and wrap_shapes.c: the common fields of the
+ * def table at index 2 (material, motion, fixed, velocity, omega, angle, id), and required
+ * fields. COMMON_BODY_FIELDS lists the common names for pl_lua_check_fields. */
+#define PL_LUA_COMMON_BODY_FIELDS "material", "motion", "fixed", "velocity", "omega", "angle", "id"
+pl_body_def pl_lua_read_common(lua_State *L, const char *fn, pl_motion_type motion);
+pl_vec2 pl_lua_required_vec2(lua_State *L, const char *fn, const char *field);
+double pl_lua_required_positive(lua_State *L, const char *fn, const char *field);
+/* w:ngon{...}, w:superquad{...}, w:random_polygon{...} (wrap_shapes.c) */
+int pl_lua_w_ngon(lua_State *L);
+int pl_lua_w_superquad(lua_State *L);
+int pl_lua_w_random_polygon(lua_State *L);
+
 /* The body handle at idx: returns its engine index and sets *w to its world. */
 int pl_lua_check_body(lua_State *L, int idx, pl_world **w);
 

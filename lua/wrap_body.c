@@ -47,10 +47,10 @@ void pl_lua_add_body(lua_State *L, int world_idx, const pl_body_def *def, const 
 /* ------------------------------------------------------------ constructors */
 
 /* Fields every body accepts, followed by the shape's own. */
-#define COMMON_FIELDS "material", "motion", "fixed", "velocity", "omega", "angle", "id"
+#define COMMON_FIELDS PL_LUA_COMMON_BODY_FIELDS
 
 /* Reads the common fields of the def table at index 2. */
-static pl_body_def read_common(lua_State *L, const char *fn, pl_motion_type motion)
+pl_body_def pl_lua_read_common(lua_State *L, const char *fn, pl_motion_type motion)
 {
     pl_body_def d = pl_default_body_def();
     if (!pl_lua_has_field(L, 2, "material"))
@@ -72,7 +72,7 @@ static pl_body_def read_common(lua_State *L, const char *fn, pl_motion_type moti
     return d;
 }
 
-static pl_vec2 required_vec2(lua_State *L, const char *fn, const char *field)
+pl_vec2 pl_lua_required_vec2(lua_State *L, const char *fn, const char *field)
 {
     if (!pl_lua_has_field(L, 2, field))
         pl_lua_error(L, "%s: %s is required (a vector {x, y} in m)", fn, field);
@@ -81,7 +81,7 @@ static pl_vec2 required_vec2(lua_State *L, const char *fn, const char *field)
     return v;
 }
 
-static double required_positive(lua_State *L, const char *fn, const char *field)
+double pl_lua_required_positive(lua_State *L, const char *fn, const char *field)
 {
     if (!pl_lua_has_field(L, 2, field))
         pl_lua_error(L, "%s: %s is required (m, > 0)", fn, field);
@@ -97,10 +97,10 @@ static int w_disc(lua_State *L)
     pl_lua_check_world(L, 1);
     pl_lua_check_def(L, 2, fn);
     pl_lua_check_fields(L, 2, fn, fields);
-    pl_body_def d = read_common(L, fn, PL_MOTION_DYNAMIC);
+    pl_body_def d = pl_lua_read_common(L, fn, PL_MOTION_DYNAMIC);
     d.shape = PL_SHAPE_DISC;
-    d.position = required_vec2(L, fn, "center");
-    d.radius = required_positive(L, fn, "radius");
+    d.position = pl_lua_required_vec2(L, fn, "center");
+    d.radius = pl_lua_required_positive(L, fn, "radius");
     pl_lua_add_body(L, 1, &d, fn);
     return 1;
 }
@@ -112,10 +112,10 @@ static int w_rectangle(lua_State *L)
     pl_lua_check_world(L, 1);
     pl_lua_check_def(L, 2, fn);
     pl_lua_check_fields(L, 2, fn, fields);
-    pl_body_def d = read_common(L, fn, PL_MOTION_DYNAMIC);
-    pl_vec2 c = required_vec2(L, fn, "center");
-    double hw = 0.5 * required_positive(L, fn, "width");
-    double hh = 0.5 * required_positive(L, fn, "height");
+    pl_body_def d = pl_lua_read_common(L, fn, PL_MOTION_DYNAMIC);
+    pl_vec2 c = pl_lua_required_vec2(L, fn, "center");
+    double hw = 0.5 * pl_lua_required_positive(L, fn, "width");
+    double hh = 0.5 * pl_lua_required_positive(L, fn, "height");
     /* Axis-aligned corners, counter-clockwise; the engine applies d.angle about the
      * centroid. */
     pl_vec2 v[4] = {{c.x - hw, c.y - hh}, {c.x + hw, c.y - hh}, {c.x + hw, c.y + hh},
@@ -135,7 +135,7 @@ static int w_polygon(lua_State *L)
     pl_lua_check_world(L, 1);
     pl_lua_check_def(L, 2, fn);
     pl_lua_check_fields(L, 2, fn, fields);
-    pl_body_def d = read_common(L, fn, PL_MOTION_DYNAMIC);
+    pl_body_def d = pl_lua_read_common(L, fn, PL_MOTION_DYNAMIC);
     if (lua_getfield(L, 2, "vertices") != LUA_TTABLE)
         pl_lua_error(L, "%s: vertices is required (a list of {x, y} in m, counter-clockwise)",
                      fn);
@@ -170,13 +170,13 @@ static int w_wall(lua_State *L)
     pl_lua_check_fields(L, 2, fn, fields);
     /* A wall is kinematic: fixed, or prescribed when it is given a velocity. */
     int moving = pl_lua_has_field(L, 2, "velocity") || pl_lua_has_field(L, 2, "omega");
-    pl_body_def d = read_common(L, fn, moving ? PL_MOTION_PRESCRIBED : PL_MOTION_FIXED);
+    pl_body_def d = pl_lua_read_common(L, fn, moving ? PL_MOTION_PRESCRIBED : PL_MOTION_FIXED);
     if (d.motion == PL_MOTION_DYNAMIC)
         pl_lua_error(L, "%s: motion must be fixed or prescribed (walls do not respond to "
                      "forces)", fn);
     d.shape = PL_SHAPE_SEGMENT;
-    d.a = required_vec2(L, fn, "from");
-    d.b = required_vec2(L, fn, "to");
+    d.a = pl_lua_required_vec2(L, fn, "from");
+    d.b = pl_lua_required_vec2(L, fn, "to");
     if (d.a.x == d.b.x && d.a.y == d.b.y)
         pl_lua_error(L, "%s: from and to must differ (a wall needs a length > 0)", fn);
     d.position = (pl_vec2){0.5 * (d.a.x + d.b.x), 0.5 * (d.a.y + d.b.y)};
@@ -188,6 +188,9 @@ const luaL_Reg pl_lua_body_constructors[] = {{"disc", w_disc},
                                              {"rectangle", w_rectangle},
                                              {"polygon", w_polygon},
                                              {"wall", w_wall},
+                                             {"ngon", pl_lua_w_ngon},
+                                             {"superquad", pl_lua_w_superquad},
+                                             {"random_polygon", pl_lua_w_random_polygon},
                                              {NULL, NULL}};
 
 /* ----------------------------------------------------------------- queries */

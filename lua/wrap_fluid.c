@@ -7,6 +7,7 @@
 #include "lua_util.h"
 #include "sandbox.h"
 #include "porelab/fluid.h"
+#include "porelab/soil.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -335,7 +336,58 @@ static int f_output_file(lua_State *L)
     return 0;
 }
 
+/* ---- saturated soil (porelab/soil.h, docs/soil.md) ---- */
+
+/* w:soil_region{lo = {x, y}, hi = {x, y}} -> {sxx, syy, sxy, u, u_excess, total_xx, total_yy,
+ * count, area}: effective stress of the grains (contacts, compression positive, Pa), mean pore
+ * and excess pore pressure (Pa), total stress sigma' + u, grains counted, wet area (m^2) */
+static int f_soil_region(lua_State *L)
+{
+    static const char *const fields[] = {"lo", "hi", NULL};
+    const char *fn = "soil_region";
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    pl_lua_check_def(L, 2, fn);
+    pl_lua_check_fields(L, 2, fn, fields);
+    pl_vec2 lo = vec_field(L, 2, fn, "lo"), hi = vec_field(L, 2, fn, "hi");
+    pl_soil_region r;
+    pl_lua_check_status(L, lw->w, pl_world_soil_region(lw->w, lo, hi, &r), fn);
+    lua_createtable(L, 0, 9);
+    const struct { const char *k; double v; } f[] = {
+        {"sxx", r.eff[0]}, {"syy", r.eff[3]}, {"sxy", r.eff[1]}, {"u", r.u}, {"u_excess", r.u_excess},
+        {"total_xx", r.total[0]}, {"total_yy", r.total[3]}, {"count", (double)r.bodies}, {"area", r.area}};
+    for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) {
+        lua_pushnumber(L, f[k].v);
+        lua_setfield(L, -2, f[k].k);
+    }
+    return 1;
+}
+
+/* w:soil_reset(): current positions become the reference of the consolidation source */
+static int f_soil_reset(lua_State *L)
+{
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    pl_lua_check_status(L, lw->w, pl_world_soil_reset(lw->w), "soil_reset");
+    return 0;
+}
+
+/* w:soil_stats() -> {t_source = s, source_abs = m^2/s} */
+static int f_soil_stats(lua_State *L)
+{
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    double t, a;
+    pl_world_soil_stats(lw->w, &t, &a);
+    lua_createtable(L, 0, 2);
+    lua_pushnumber(L, t);
+    lua_setfield(L, -2, "t_source");
+    lua_pushnumber(L, a);
+    lua_setfield(L, -2, "source_abs");
+    return 1;
+}
+
 const luaL_Reg pl_lua_fluid_methods[] = {{"fluid_quad", f_quad},
+                                         {"soil_region", f_soil_region},
+                                         {"soil_reset", f_soil_reset},
+                                         {"soil_stats", f_soil_stats},
                                          {"fluid_bc", f_bc},
                                          {"fluid_flux", f_flux},
                                          {"clear_fluid_bcs", f_clear_bcs},

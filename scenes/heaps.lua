@@ -33,34 +33,8 @@ local first_grain = w:body_count() + 1
 local xp, xd = -0.42, 0.42   -- pour points, m
 local count, per_batch, period = 150, 3, 0.06
 
--- A random convex polygon inscribed in an ellipse (corners at jittered parametric angles,
--- so they stay ordered and the outline convex), as porelab's pl_shape_random_polygon.
 local rng = random.new(2020)
-local function random_polygon(cx, cy)
-  local n = rng:integer(5, 9)
-  local a = rng:uniform(0.005, 0.0075)
-  local b = a * rng:uniform(0.6, 1.0)
-  local phase = rng:uniform(0, 2 * math.pi)
-  local rot = rng:uniform(0, 2 * math.pi)
-  local c, s = math.cos(rot), math.sin(rot)
-  local v = {}
-  for k = 0, n - 1 do
-    local t = phase + 2 * math.pi * (k + 0.5 * (rng:uniform() - 0.5)) / n
-    local x, y = a * math.cos(t), b * math.sin(t)
-    v[#v + 1] = { cx + c * x - s * y, cy + s * x + c * y }
-  end
-  return v
-end
-
--- Area of an outline (shoelace), for the disc of the same area.
-local function area(v)
-  local s = 0
-  for i = 1, #v do
-    local p, q = v[i], v[i % #v + 1]
-    s = s + p[1] * q[2] - q[1] * p[2]
-  end
-  return 0.5 * s
-end
+local seed = 0
 
 -- Height of the highest slow grain centre within 3 cm of x (the heap's top; grains still
 -- falling do not count, but a new batch starts 1.6 cm clear of them).
@@ -85,9 +59,11 @@ local function pour()
   for j = 0, per_batch - 1 do
     if poured >= count then break end
     local dx = -0.015 + 0.015 * j + rng:uniform(-0.002, 0.002)
-    local v = random_polygon(xp + dx, yp)
-    w:polygon { vertices = v, material = grain }
-    w:disc { center = { xd + dx, yd }, radius = math.sqrt(area(v) / math.pi), material = disc }
+    -- seed 004 §2.1 grains: 5-9 corners on ellipses with half axes 5-7.5 mm, aspect 0.6-1
+    seed = seed + 1
+    local p = w:random_polygon { center = { xp + dx, yp }, seed = seed, corners = { 5, 9 },
+                                 axis = { 0.005, 0.0075 }, aspect = { 0.6, 1.0 }, material = grain }
+    w:disc { center = { xd + dx, yd }, radius = math.sqrt(p:area() / math.pi), material = disc }
     poured = poured + 1
   end
 end

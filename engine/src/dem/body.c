@@ -1,6 +1,7 @@
 /* Bodies: creation with exact mass properties, outlines, setters and per-body queries. */
 #include "dem/world_internal.h"
 #include "geom/polygon.h"
+#include "porelab/shapes.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -105,12 +106,11 @@ int pl_world_add_body(pl_world *w, const pl_body_def *d) {
         if (!d->vertices || d->vertex_count < 3 || d->vertex_count > PL_MAX_POLY_VERTICES)
             return pl__error(w, PL_ERR_ARG, "polygon: vertex count must be in 3..%d (got %d)", PL_MAX_POLY_VERTICES,
                              d->vertex_count);
-        for (int k = 0; k < d->vertex_count; k++)
-            if (!finite2(d->vertices[k])) return pl__error(w, PL_ERR_ARG, "polygon: vertex %d is not finite", k + 1);
-        if (pl_poly_signed_area(d->vertices, d->vertex_count) <= 0)
-            return pl__error(w, PL_ERR_ARG, "polygon: vertices must be counter-clockwise with a positive area");
-        if (!pl_poly_is_convex_ccw(d->vertices, d->vertex_count))
-            return pl__error(w, PL_ERR_ARG, "polygon: the outline must be convex (no reflex or collinear corner)");
+        {
+            char msg[512];
+            if (pl_polygon_check(d->vertices, d->vertex_count, msg, sizeof msg) != PL_OK)
+                return pl__error(w, PL_ERR_ARG, "polygon: %s", msg);
+        }
         nv = d->vertex_count;
         centre = pl_poly_centroid(d->vertices, nv);
         for (int k = 0; k < nv; k++) {
