@@ -7,6 +7,8 @@
 #include "run_plan.h"
 #include "vtk_series.h"
 #include "render/drawlist.h"
+#include "gl_cli.h"
+#include "window.h"
 
 #include <limits.h>
 #include <stdio.h>
@@ -26,6 +28,8 @@ static const pl_opt_spec run_specs[] = {
     {"--hash", NULL, NULL, "print the final state hash as 'state-hash: <16 hex digits>'"},
     {"--vtk", NULL, NULL, "also write VTK files per frame (DIR/vtk/, indexed by DIR/*.pvd) for ParaView"},
     {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
+    {"--renderer", NULL, "NAME", "cairo (default) or gl (OpenGL through OSMesa) for the frames"},
+    {"--window", NULL, NULL, "open the live lab window instead of writing frames (porelab view)"},
     {NULL, NULL, NULL, NULL}};
 
 static const pl_command_help run_help = {
@@ -50,6 +54,7 @@ typedef struct run_ctx {
     pl_vtk_series *vtk;
     long long start_step;
     double last_frame_time;
+    pl_gl_frames *gfw; /* --renderer gl: frames drawn by OpenGL instead of fw (last member) */
 } run_ctx;
 
 static long long steps_done(const run_ctx *c)
@@ -57,11 +62,16 @@ static long long steps_done(const run_ctx *c)
     return (long long)pl_world_step_count(c->w) - c->start_step;
 }
 
+static int frame_count(const run_ctx *c)
+{
+    return c->gfw ? pl_gl_frames_count(c->gfw) : c->fw ? pl_frame_writer_count(c->fw) : 0;
+}
+
 static void print_stop(const run_ctx *c, const char *why)
 {
     fprintf(stderr, "porelab: run stopped at t = %.6g s (step %lld of %lld): %s\n",
             pl_world_time(c->w), steps_done(c), c->plan->total_steps, why);
-    int n = c->fw ? pl_frame_writer_count(c->fw) : 0;
+    int n = frame_count(c);
     if (n > 0)
         fprintf(stderr, "porelab: %d frame%s kept in %s/ (the last at t = %.6g s)\n", n,
                 n == 1 ? "" : "s", c->out_dir, c->last_frame_time);
@@ -73,12 +83,13 @@ static void print_stop(const run_ctx *c, const char *why)
 static int frame(run_ctx *c)
 {
     char err[1024];
-    long long index = pl_frame_writer_count(c->fw);
+    long long index = frame_count(c);
     if (pl_cli_overlay(c->o, c->s, c->overlay, c->ropt) != 0) {
         print_stop(c, "the scene's render.overlay raised an error (above)");
         return -1;
     }
-    if (pl_frame_writer_add(c->fw, c->w, c->ropt, err, sizeof err) != 0) {
+    if ((c->gfw ? pl_gl_frames_add(c->gfw, c->w, c->ropt, err, sizeof err)
+                : pl_frame_writer_add(c->fw, c->w, c->ropt, err, sizeof err)) != 0) {
         print_stop(c, err);
         return -1;
     }
@@ -153,7 +164,7 @@ static void print_summary(const run_ctx *c, double wall)
     pl_report_bodies(stdout, c->w);
     printf("  %-15s%d\n", "contacts", pl_world_contact_count(c->w));
     pl_report_energy(stdout, c->w);
-    int frames = pl_frame_writer_count(c->fw);
+    int frames = frame_count(c);
     char interval[64];
     if (p->every > 0)
         snprintf(interval, sizeof interval, "every %lld steps", p->every);
@@ -174,11 +185,14 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     pl_draw_list overlay;
     pl_draw_list_init(&overlay);
     run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL, NULL,
-                 (long long)pl_world_step_count(w), 0};
+                 (long long)pl_world_step_count(w), 0, NULL};
     char err[1024];
     const char *video = pl_opts_get(o, "--video");
-    c.fw = pl_frame_writer_open(out_dir, video, pl_run_plan_video_fps(&plan), err, sizeof err);
-    if (!c.fw) {
+    if (pl_gl_cli_parse_renderer(pl_opts_get(o, "--renderer"), "run") == 1)
+        c.gfw = pl_gl_frames_open(out_dir, video, pl_run_plan_video_fps(&plan), err, sizeof err);
+    else
+        c.fw = pl_frame_writer_open(out_dir, video, pl_run_plan_video_fps(&plan), err, sizeof err);
+    if (!c.fw && !c.gfw) {
         fprintf(stderr, "porelab: cannot write frames to %s/: %s\n", out_dir, err);
         pl_draw_list_free(&overlay);
         return PL_EXIT_FAIL;
@@ -186,6 +200,7 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     if (pl_opts_has(o, "--vtk") && !(c.vtk = pl_vtk_series_open(out_dir, err, sizeof err))) {
         fprintf(stderr, "porelab: --vtk: %s\n", err);
         pl_frame_writer_close(&c.fw, err, sizeof err);
+        pl_gl_frames_close(&c.gfw, err, sizeof err);
         pl_draw_list_free(&overlay);
         return PL_EXIT_FAIL;
     }
@@ -194,9 +209,10 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     pl_progress_start(&prog, plan.total_steps, quiet);
     rc = step_loop(&c, &prog) == 0 ? PL_EXIT_OK : PL_EXIT_FAIL;
     double wall = pl_wall_seconds() - prog.wall_start;
-    int frames = pl_frame_writer_count(c.fw);
+    int frames = frame_count(&c);
     if (rc == PL_EXIT_OK && !quiet) print_summary(&c, wall);
-    if (pl_frame_writer_close(&c.fw, err, sizeof err) != 0) {
+    if ((c.gfw ? pl_gl_frames_close(&c.gfw, err, sizeof err)
+               : pl_frame_writer_close(&c.fw, err, sizeof err)) != 0) {
         fprintf(stderr, "porelab: video: %s (the %d frames remain in %s/)\n", err, frames,
                 out_dir);
         rc = PL_EXIT_FAIL;
@@ -239,6 +255,8 @@ int pl_cmd_run(int argc, char **argv)
     int rc = pl_opts_parse(&o, &run_help, argc, argv, 1);
     if (rc >= 0) return rc;
     if (pl_cli_require_scene(&o) != 0) return PL_EXIT_USAGE;
+    if (pl_gl_cli_parse_renderer(pl_opts_get(&o, "--renderer"), "run") < 0) return PL_EXIT_USAGE;
+    if (pl_opts_has(&o, "--window")) return pl_window_main(&o);
     char out_dir[PATH_MAX];
     if (pl_opts_has(&o, "--out"))
         snprintf(out_dir, sizeof out_dir, "%s", pl_opts_get(&o, "--out"));

@@ -2,6 +2,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "render/drawlist.h"
+#include "gl_cli.h"
 
 #include <limits.h>
 #include <math.h>
@@ -17,6 +18,7 @@ static const pl_opt_spec still_specs[] = {
     {"--trust", NULL, NULL, "lift the sandbox (only for scenes you trust)"},
     {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
     {"--quiet", "-q", NULL, "do not print what was written"},
+    {"--renderer", NULL, "NAME", "cairo (default) or gl (OpenGL through OSMesa; PNG only)"},
     {NULL, NULL, NULL, NULL}};
 
 static const pl_command_help still_help = {
@@ -44,6 +46,8 @@ int pl_cmd_still(int argc, char **argv)
                         "(got '%s')\n", file ? file : "");
         return PL_EXIT_USAGE;
     }
+    int use_gl = pl_gl_cli_parse_renderer(pl_opts_get(&o, "--renderer"), "still");
+    if (use_gl < 0) return PL_EXIT_USAGE;
     double at = -1;
     if (pl_opts_double(&o, "--at", 0, 1, &at) != 0) return PL_EXIT_USAGE;
     char out_dir[PATH_MAX];
@@ -81,7 +85,8 @@ int pl_cmd_still(int argc, char **argv)
         pl_draw_list overlay;
         pl_draw_list_init(&overlay);
         if (rc != PL_EXIT_USAGE && st == PL_OK && pl_cli_overlay(&o, s, &overlay, &ropt) == 0) {
-            if (pl_render_to_file(w, &ropt, file, err, sizeof err) != 0) {
+            if ((use_gl ? pl_gl_cli_still(w, &ropt, file, err, sizeof err)
+                        : pl_render_to_file(w, &ropt, file, err, sizeof err)) != 0) {
                 fprintf(stderr, "porelab: cannot write %s: %s\n", file, err);
             } else {
                 rc = PL_EXIT_OK;

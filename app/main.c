@@ -12,6 +12,7 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"run", pl_cmd_run, "run a scene and write PNG frames (and a video)"},
+    {"view", pl_cmd_view, "open a scene in the live lab window (play, pause, rewind, poke)"},
     {"still", pl_cmd_still, "draw one figure of a scene at a time T (PNG, SVG or PDF)"},
     {"info", pl_cmd_info, "describe a scene: bodies, materials, contact law, time step, flags"},
     {"flags", pl_cmd_flags, "list the MIMES flags with units, ranges and whether they are built"},

@@ -252,7 +252,10 @@ pl_gl *pl_gl_create(pl_gl_get_proc get_proc, int samples, char *err, size_t errl
     if (g->f.RenderbufferStorageMultisample) g->f.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
     g->f.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_rb);
     g->max_size = max_rb > 0 ? max_rb : 4096;
-    if (samples <= 0) samples = 8;
+    if (samples <= 0) { /* default 4; PORELAB_GL_SAMPLES=1 trades polygon edges for speed */
+        const char *env = getenv("PORELAB_GL_SAMPLES");
+        samples = env && atoi(env) > 0 ? atoi(env) : 4;
+    }
     if (samples > max_samples) samples = max_samples;
     if (samples < 2) samples = 1;
     /* llvmpipe and most drivers support 4 or 8; a count they reject falls back to 4, then 1 */

@@ -13,8 +13,8 @@
 /// - filled polygons: fan (convex) or ear clipping (concave); Gouraud triangles: vertex colours;
 /// - arrows: butt shaft + filled head, as in the cairo backend;
 /// - text: textured quads from a FreeType glyph atlas (gl_text.h), halo glyphs first.
-/// Geometry edges are antialiased by multisampling (up to 8 samples) in an offscreen
-/// framebuffer, resolved into a single-sample one that is read back or shown in the window.
+/// Geometry edges are antialiased by multisampling in an offscreen
+/// framebuffer (4 samples by default), resolved into a single-sample one that is read back or shown in the window.
 #ifndef PORELAB_BACKEND_GL_H
 #define PORELAB_BACKEND_GL_H
 
@@ -26,7 +26,9 @@
 typedef struct pl_gl pl_gl;
 
 /// Creates the renderer in the current GL context. samples = multisample count wanted
-/// (0 = default 8, clamped to what the driver offers; 1 = none). NULL with a message.
+/// (0 = the environment variable PORELAB_GL_SAMPLES, else 4; clamped to what the driver
+/// offers; 1 = none: circles and lines stay antialiased analytically, polygon and triangle
+/// edges do not). The goldens and the GL-vs-cairo threshold are for 4. NULL with a message.
 pl_gl *pl_gl_create(pl_gl_get_proc get_proc, int samples, char *err, size_t errlen);
 void pl_gl_destroy(pl_gl **g);
 

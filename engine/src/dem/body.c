@@ -109,7 +109,7 @@ int pl_world_add_body(pl_world *w, const pl_body_def *d) {
         {
             char msg[512];
             if (pl_polygon_check(d->vertices, d->vertex_count, msg, sizeof msg) != PL_OK)
-                return pl__error(w, PL_ERR_ARG, "polygon: %s", msg);
+                return pl__error(w, PL_ERR_ARG, "%s", msg); /* "polygon: ..." */
         }
         nv = d->vertex_count;
         centre = pl_poly_centroid(d->vertices, nv);
