@@ -1,0 +1,622 @@
+/* The live lab window: SDL2 + the OpenGL backend. One loop: events -> interactions ->
+ * stepping -> draw list (scene, then HUD on top) -> GL -> swap. Keys: window_hud.c. */
+#include "window.h"
+
+#include <SDL.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "backend_gl.h"
+#include "porelab/fluid.h"
+#include "render/draw_world.h"
+#include "scene_overlay.h"
+#include "window_hud.h"
+#include "window_sim.h"
+
+typedef struct win {
+    SDL_Window *sdl;
+    SDL_GLContext ctx;
+    pl_gl *gl;
+    pl_wsim sim;
+    pl_draw_list scene_dl, frame_dl, hud, tmp;
+    pl_render_scene rs;
+    int playing, show_help, show_hud, quit;
+    long long speed;        /* steps per drawn frame */
+    int mx, my, hover, grab, panning, pan_x, pan_y, param_sel, shots;
+    char msg[256];
+    double msg_until, fps, last_frame;
+    pl_image img;
+} win;
+
+static double now_s(void) { return (double)SDL_GetPerformanceCounter() / (double)SDL_GetPerformanceFrequency(); }
+
+static void message(win *g, const char *fmt, double value)
+{
+    snprintf(g->msg, sizeof g->msg, fmt, value);
+    g->msg_until = now_s() + 2.5;
+}
+
+static void *get_proc(const char *name)
+{
+    return SDL_GL_GetProcAddress(name);
+}
+
+static long long frame_interval(const win *g)
+{
+    long long k = pl_run_plan_frame_step(&g->sim.plan, 1);
+    return k > 0 ? k : 1;
+}
+
+/* ------------------------------------------------------------------ camera */
+
+/* Switches from the automatic camera to an explicit view rectangle that reproduces the
+ * current picture exactly (same centre and scale), so pan and zoom start from it. */
+static void manual_view(win *g)
+{
+    pl_render_options *o = &g->sim.ropt;
+    if (!o->auto_camera) return;
+    pl_camera cam = g->scene_dl.camera;
+    double hw = 0.5 * cam.width / cam.scale, hh = 0.5 * cam.height / cam.scale;
+    o->auto_camera = 0;
+    o->view_lo = (pl_vec2){cam.center.x - hw, cam.center.y - hh};
+    o->view_hi = (pl_vec2){cam.center.x + hw, cam.center.y + hh};
+    char err[256];
+    if (pl_render_build(g->sim.w, o, &g->tmp, err, sizeof err) == 0 && g->tmp.camera.scale > 0) {
+        double f = g->tmp.camera.scale / cam.scale; /* scale ~ 1 / extent */
+        o->view_lo = (pl_vec2){cam.center.x - hw * f, cam.center.y - hh * f};
+        o->view_hi = (pl_vec2){cam.center.x + hw * f, cam.center.y + hh * f};
+    }
+}
+
+static void zoom_at(win *g, int px, int py, double factor)
+{
+    manual_view(g);
+    pl_render_options *o = &g->sim.ropt;
+    pl_vec2 p = pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){px, py});
+    o->view_lo = (pl_vec2){p.x + (o->view_lo.x - p.x) * factor, p.y + (o->view_lo.y - p.y) * factor};
+    o->view_hi = (pl_vec2){p.x + (o->view_hi.x - p.x) * factor, p.y + (o->view_hi.y - p.y) * factor};
+}
+
+static void pan_by(win *g, int dx, int dy)
+{
+    manual_view(g);
+    pl_render_options *o = &g->sim.ropt;
+    double s = g->scene_dl.camera.scale;
+    double wx = -dx / s, wy = dy / s;
+    o->view_lo.x += wx; o->view_hi.x += wx;
+    o->view_lo.y += wy; o->view_hi.y += wy;
+}
+
+/* ------------------------------------------------------------------ picking */
+
+static int body_at(win *g, pl_vec2 p)
+{
+    const pl_render_scene *s = &g->rs;
+    double tol = 3.0 / g->scene_dl.camera.scale;
+    for (int i = s->body_count - 1; i >= 0; i--) {
+        const pl_body_info *b = &s->bodies[i];
+        const pl_vec2 *v = s->verts + s->vert_first[i];
+        int nv = s->vert_first[i + 1] - s->vert_first[i];
+        double dx = p.x - b->position.x, dy = p.y - b->position.y;
+        if (b->shape == PL_SHAPE_DISC) {
+            if (dx * dx + dy * dy <= b->radius * b->radius) return i;
+        } else if (b->shape == PL_SHAPE_POLYGON && nv >= 3) {
+            int in = 1;
+            for (int k = 0; k < nv && in; k++) {
+                pl_vec2 a = v[k], c = v[(k + 1) % nv];
+                if ((c.x - a.x) * (p.y - a.y) - (c.y - a.y) * (p.x - a.x) < 0) in = 0;
+            }
+            if (in) return i;
+        } else if (b->shape == PL_SHAPE_SEGMENT && nv >= 2) {
+            double ex = v[1].x - v[0].x, ey = v[1].y - v[0].y, l2 = ex * ex + ey * ey;
+            double t = l2 > 0 ? ((p.x - v[0].x) * ex + (p.y - v[0].y) * ey) / l2 : 0;
+            t = t < 0 ? 0 : t > 1 ? 1 : t;
+            double qx = v[0].x + t * ex - p.x, qy = v[0].y + t * ey - p.y;
+            if (qx * qx + qy * qy <= tol * tol) return i;
+        }
+    }
+    return -1;
+}
+
+/* Darcy velocity and porosity of the fluid element under p (0 when outside the mesh). */
+static int fluid_element_at(win *g, pl_vec2 p, pl_vec2 *vel, double *porosity)
+{
+    const pl_render_scene *s = &g->rs;
+    for (int t = 0; t < s->fluid_tri_count; t++) {
+        const int *k = s->fluid_tris + 3 * t;
+        pl_vec2 a = s->fluid_nodes[k[0]], b = s->fluid_nodes[k[1]], c = s->fluid_nodes[k[2]];
+        double d1 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+        double d2 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);
+        double d3 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);
+        if ((d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0)) {
+            *vel = s->fluid_velocity ? s->fluid_velocity[t] : (pl_vec2){0, 0};
+            *porosity = NAN;
+            int n = pl_world_fluid_triangle_count(g->sim.w);
+            if (n > t) {
+                double *por = malloc((size_t)n * sizeof *por);
+                if (por && pl_world_fluid_copy_element_field(g->sim.w, PL_FLUID_POROSITY, por, n) > t)
+                    *porosity = por[t];
+                free(por);
+            }
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ drawing */
+
+static int build_scene(win *g)
+{
+    char err[900];
+    int present = pl_scene_overlay(g->sim.s, &g->sim.overlay);
+    g->sim.ropt.overlay = present > 0 ? &g->sim.overlay : NULL;
+    if (present < 0) snprintf(g->sim.error, sizeof g->sim.error, "%s", pl_scene_error(g->sim.s));
+    if (pl_render_build(g->sim.w, &g->sim.ropt, &g->scene_dl, err, sizeof err) != 0) {
+        snprintf(g->sim.error, sizeof g->sim.error, "render: %s", err);
+        return -1;
+    }
+    return 0;
+}
+
+static const char *coloring_name(int c)
+{
+    return c == PL_COLOR_BY_SPEED ? "speed" : c == PL_COLOR_BY_STRESS ? "stress" : "material";
+}
+
+static void build_hud(win *g)
+{
+    pl_draw_list *h = &g->hud;
+    pl_draw_list_clear(h);
+    h->camera = g->scene_dl.camera;
+    float fs = 13.0f;
+    pl_rgba ink = pl_rgb(0.95, 0.95, 0.92);
+    if (g->grab >= 0 && g->grab < g->rs.body_count) { /* the spring */
+        pl_vec2 a = pl_camera_to_px(&h->camera, g->rs.bodies[g->grab].position);
+        pl_dl_line(h, PL_SPACE_PIXEL, a, (pl_vec2){g->mx, g->my}, pl_rgb_hex(0xE08020), 2.0f);
+    }
+    if (!g->show_hud) return;
+    char l[8][200];
+    const char *lines[8];
+    int n = 0;
+    pl_world *w = g->sim.w;
+    snprintf(l[n], sizeof l[n], "t = %.4f s   step %lld   %s   %lld steps/frame   %.0f fps   "
+             "colour: %s   [h] help", pl_world_time(w), pl_wsim_steps(&g->sim),
+             g->sim.stopped ? "STOPPED" : g->playing ? "playing" : "paused", g->speed, g->fps,
+             coloring_name(g->sim.ropt.coloring));
+    lines[n] = l[n]; n++;
+    if (g->msg[0] && now_s() < g->msg_until) { snprintf(l[n], sizeof l[n], "%.190s", g->msg); lines[n] = l[n]; n++; }
+    pl_hud_panel(h, 2, 0.0, lines, n, fs, ink);
+
+    /* values under the cursor */
+    n = 0;
+    pl_vec2 p = pl_camera_to_world(&h->camera, (pl_vec2){g->mx, g->my});
+    snprintf(l[n], sizeof l[n], "x = %.4g m, y = %.4g m", p.x, p.y);
+    lines[n] = l[n]; n++;
+    if (g->hover >= 0 && g->hover < g->rs.body_count) {
+        const pl_body_info *b = &g->rs.bodies[g->hover];
+        const char *shape = b->shape == PL_SHAPE_DISC ? "disc" : b->shape == PL_SHAPE_POLYGON ? "polygon" : "wall";
+        const char *mot = b->motion == PL_MOTION_DYNAMIC ? "free" : b->motion == PL_MOTION_FIXED ? "fixed" : "prescribed";
+        snprintf(l[n], sizeof l[n], "body %d (%s, %s, %s)", g->hover + 1, shape, mot,
+                 b->material < g->rs.material_count ? g->rs.material_names[b->material] : "?");
+        lines[n] = l[n]; n++;
+        snprintf(l[n], sizeof l[n], "v = (%.4g, %.4g) m/s  |v| = %.4g m/s", b->velocity.x,
+                 b->velocity.y, hypot(b->velocity.x, b->velocity.y));
+        lines[n] = l[n]; n++;
+        if (g->rs.stress) {
+            snprintf(l[n], sizeof l[n], "mean stress = %.4g Pa   force = (%.3g, %.3g) N",
+                     g->rs.stress[g->hover], b->force.x, b->force.y);
+            lines[n] = l[n]; n++;
+        }
+    }
+    if (pl_world_fluid_node_count(w) > 0) {
+        double pr = 0, head = NAN;
+        if (pl_world_fluid_pressure_at(w, p, &pr, &head)) {
+            snprintf(l[n], sizeof l[n], "pore pressure = %.4g Pa   head = %.4g m", pr, head);
+            lines[n] = l[n]; n++;
+            pl_vec2 v;
+            double por;
+            if (fluid_element_at(g, p, &v, &por)) {
+                snprintf(l[n], sizeof l[n], "Darcy velocity = (%.3g, %.3g) m/s   porosity = %.3f",
+                         v.x, v.y, por);
+                lines[n] = l[n]; n++;
+            }
+        }
+    }
+    pl_hud_panel(h, 3, 2.0 * 1.35 * fs + 2.0 * fs, lines, n, fs, ink);
+
+    /* parameters and errors */
+    n = 0;
+    for (int i = 0; i < g->sim.nparams && n < 7; i++) {
+        const pl_wparam *q = &g->sim.params[i];
+        snprintf(l[n], sizeof l[n], "%s %s = %.4g %s  [%.4g .. %.4g]", i == g->param_sel ? ">" : " ",
+                 q->name, q->value, q->unit, q->min, q->max);
+        lines[n] = l[n]; n++;
+    }
+    if (n > 0) pl_hud_panel(h, 1, 0.0, lines, n, fs, ink);
+    if (g->sim.error[0]) {
+        /* wrap the message at ~90 characters */
+        char buf[1024];
+        snprintf(buf, sizeof buf, "%s", g->sim.error);
+        int m = 0;
+        const char *el[8];
+        char wrap[8][100];
+        size_t len = strlen(buf);
+        for (size_t off = 0; off < len && m < 8; off += 90, m++) {
+            snprintf(wrap[m], sizeof wrap[m], "%.90s", buf + off);
+            el[m] = wrap[m];
+        }
+        pl_hud_panel(h, 0, 0.0, el, m, fs, pl_rgb_hex(0xFF8080));
+    }
+    if (g->show_help)
+        pl_hud_panel(h, 0, g->sim.error[0] ? 8.0 * 1.35 * fs : 0.0, pl_hud_help, pl_hud_help_count, fs, ink);
+}
+
+static void screenshot(win *g)
+{
+    char err[900], path[PATH_MAX + 64];
+    if (build_scene(g) != 0 || pl_gl_render(g->gl, &g->scene_dl, err, sizeof err) != 0 ||
+        pl_gl_read(g->gl, &g->img, err, sizeof err) != 0) {
+        message(g, "screenshot failed", 0);
+        return;
+    }
+    snprintf(path, sizeof path, "%s/screenshot_%03d.png", g->sim.out_dir, g->shots++);
+    char mk[PATH_MAX + 16];
+    snprintf(mk, sizeof mk, "%s", g->sim.out_dir);
+    for (char *c = mk + 1; *c; c++)
+        if (*c == '/') { *c = 0; mkdir(mk, 0777); *c = '/'; }
+    mkdir(mk, 0777);
+    if (pl_png_write(path, &g->img, 6, 1, err, sizeof err) != 0) {
+        snprintf(g->sim.error, sizeof g->sim.error, "screenshot: %s", err);
+        return;
+    }
+    printf("screenshot: %s (t = %.9g s, step %lld)\n", path, pl_world_time(g->sim.w),
+           pl_wsim_steps(&g->sim));
+    fflush(stdout);
+    snprintf(g->msg, sizeof g->msg, "wrote %.200s", path);
+    g->msg_until = now_s() + 2.5;
+}
+
+/* ------------------------------------------------------------------ input */
+
+static void toggle_layer(win *g, unsigned bits, const char *name)
+{
+    g->sim.ropt.layers ^= bits;
+    snprintf(g->msg, sizeof g->msg, "%s %s", name, (g->sim.ropt.layers & bits) ? "on" : "off");
+    g->msg_until = now_s() + 2.0;
+}
+
+static void rewind_to(win *g, long long step)
+{
+    double t0 = now_s();
+    if (pl_wsim_rewind(&g->sim, step) == 0) {
+        message(g, "rewound (replayed in %.2f s)", now_s() - t0);
+        printf("rewind: step %lld (t = %.9g s), replayed in %.3f s\n", pl_wsim_steps(&g->sim),
+               pl_world_time(g->sim.w), now_s() - t0);
+        fflush(stdout);
+    }
+    g->playing = 0;
+    g->grab = -1;
+}
+
+static void color_range(win *g, double f)
+{
+    pl_render_options *o = &g->sim.ropt;
+    if (o->coloring == PL_COLOR_BY_MATERIAL) {
+        /* the range keys then act on the fluid field */
+        if (!(o->fluid_max > o->fluid_min)) {
+            double lo = INFINITY, hi = -INFINITY;
+            for (int i = 0; i < g->rs.fluid_node_count; i++) {
+                lo = fmin(lo, g->rs.fluid_values[i]);
+                hi = fmax(hi, g->rs.fluid_values[i]);
+            }
+            if (!(hi > lo)) return;
+            o->fluid_min = lo;
+            o->fluid_max = hi;
+        }
+        double c = 0.5 * (o->fluid_min + o->fluid_max), h = 0.5 * (o->fluid_max - o->fluid_min) * f;
+        o->fluid_min = c - h;
+        o->fluid_max = c + h;
+        return;
+    }
+    if (!(o->color_max > o->color_min)) {
+        double hi = 0;
+        for (int i = 0; i < g->rs.body_count; i++) {
+            const pl_body_info *b = &g->rs.bodies[i];
+            double v = o->coloring == PL_COLOR_BY_SPEED ? hypot(b->velocity.x, b->velocity.y)
+                                                       : (g->rs.stress ? fabs(g->rs.stress[i]) : 0);
+            if (b->motion == PL_MOTION_DYNAMIC && v > hi) hi = v;
+        }
+        if (!(hi > 0)) return;
+        o->color_min = 0;
+        o->color_max = hi;
+    }
+    o->color_max *= f;
+}
+
+static void spring(win *g);
+
+static void key(win *g, SDL_Keycode k, Uint16 mod)
+{
+    pl_render_options *o = &g->sim.ropt;
+    long long steps = pl_wsim_steps(&g->sim);
+    int shift = (mod & KMOD_SHIFT) != 0;
+    switch (k) {
+    case SDLK_ESCAPE: case SDLK_q: g->quit = 1; break;
+    case SDLK_SPACE: g->playing = !g->playing; break;
+    case SDLK_s: spring(g); pl_wsim_advance(&g->sim, frame_interval(g)); g->playing = 0; break;
+    case SDLK_PERIOD: spring(g); pl_wsim_advance(&g->sim, 1); g->playing = 0; break;
+    case SDLK_PLUS: case SDLK_EQUALS: case SDLK_KP_PLUS:
+        if (g->speed < (1LL << 40)) g->speed *= 2;
+        break;
+    case SDLK_MINUS: case SDLK_KP_MINUS:
+        if (g->speed > 1) g->speed /= 2;
+        break;
+    case SDLK_r:
+        if (pl_wsim_load(&g->sim, !shift) == 0) message(g, shift ? "restarted with the scene's values" : "restarted", 0);
+        g->playing = 0;
+        g->grab = -1;
+        break;
+    case SDLK_LEFT: case SDLK_BACKSPACE: rewind_to(g, steps - frame_interval(g)); break;
+    case SDLK_PAGEDOWN: rewind_to(g, steps - (long long)llround(1.0 / pl_world_dt(g->sim.w))); break;
+    case SDLK_HOME: rewind_to(g, 0); break;
+    case SDLK_1: toggle_layer(g, PL_LAYER_BODIES, "bodies"); break;
+    case SDLK_2: toggle_layer(g, PL_LAYER_FORCES, "force chains"); break;
+    case SDLK_3: toggle_layer(g, PL_LAYER_PRESSURE, "pressure"); break;
+    case SDLK_4: toggle_layer(g, PL_LAYER_ISOLINES, "isolines"); break;
+    case SDLK_5: toggle_layer(g, PL_LAYER_VELOCITY, "velocity"); break;
+    case SDLK_6: toggle_layer(g, PL_LAYER_MESH, "mesh"); break;
+    case SDLK_7: toggle_layer(g, PL_LAYER_TIME | PL_LAYER_TITLE | PL_LAYER_COLORBAR | PL_LAYER_SCALEBAR, "labels"); break;
+    case SDLK_8: toggle_layer(g, PL_LAYER_TANGENTIAL, "tangential forces"); break;
+    case SDLK_9: toggle_layer(g, PL_LAYER_OVERLAY, "scene overlay"); break;
+    case SDLK_c: o->coloring = (pl_body_coloring)((o->coloring + 1) % 3); o->color_min = o->color_max = 0; break;
+    case SDLK_f:
+        o->fluid_field = o->fluid_field == PL_FLUID_PRESSURE ? PL_FLUID_EXCESS_PRESSURE
+                       : o->fluid_field == PL_FLUID_EXCESS_PRESSURE ? PL_FLUID_HEAD : PL_FLUID_PRESSURE;
+        o->fluid_min = o->fluid_max = 0;
+        message(g, o->fluid_field == PL_FLUID_PRESSURE ? "field: pore pressure"
+                 : o->fluid_field == PL_FLUID_EXCESS_PRESSURE ? "field: excess pore pressure" : "field: total head", 0);
+        break;
+    case SDLK_a: o->color_min = o->color_max = 0; o->fluid_min = o->fluid_max = 0; message(g, "automatic colour range", 0); break;
+    case SDLK_LEFTBRACKET: color_range(g, 1.0 / 1.5); break;
+    case SDLK_RIGHTBRACKET: color_range(g, 1.5); break;
+    case SDLK_z: /* the scene's own view */
+        o->auto_camera = g->sim.scene_auto_camera;
+        o->view_lo = g->sim.scene_view_lo;
+        o->view_hi = g->sim.scene_view_hi;
+        break;
+    case SDLK_TAB: if (g->sim.nparams > 0) g->param_sel = (g->param_sel + 1) % g->sim.nparams; break;
+    case SDLK_UP: case SDLK_DOWN:
+        if (g->sim.nparams > 0) {
+            pl_wparam *q = &g->sim.params[g->param_sel];
+            pl_wsim_set_param(&g->sim, g->param_sel, q->value + (k == SDLK_UP ? q->step : -q->step));
+        }
+        break;
+    case SDLK_p: case SDLK_F12: screenshot(g); break;
+    case SDLK_h: case SDLK_F1: g->show_help = !g->show_help; break;
+    case SDLK_i: g->show_hud = !g->show_hud; break;
+    case SDLK_x:
+        if (g->hover >= 0 && g->rs.bodies[g->hover].shape != PL_SHAPE_SEGMENT)
+            pl_wsim_set_motion(&g->sim, g->hover, g->rs.bodies[g->hover].motion == PL_MOTION_FIXED
+                                                       ? PL_MOTION_DYNAMIC : PL_MOTION_FIXED);
+        break;
+    default: break;
+    }
+}
+
+static void release_grab(win *g)
+{
+    if (g->grab >= 0) pl_wsim_set_load(&g->sim, g->grab, (pl_vec2){0, 0});
+    g->grab = -1;
+}
+
+static void event(win *g, const SDL_Event *e)
+{
+    switch (e->type) {
+    case SDL_QUIT: g->quit = 1; break;
+    case SDL_KEYDOWN: key(g, e->key.keysym.sym, e->key.keysym.mod); break;
+    case SDL_MOUSEMOTION:
+        if (g->panning) pan_by(g, e->motion.x - g->mx, e->motion.y - g->my);
+        g->mx = e->motion.x;
+        g->my = e->motion.y;
+        break;
+    case SDL_MOUSEBUTTONDOWN:
+        g->mx = e->button.x;
+        g->my = e->button.y;
+        g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
+        if (e->button.button == SDL_BUTTON_LEFT) {
+            if (g->hover >= 0 && g->rs.bodies[g->hover].motion == PL_MOTION_DYNAMIC &&
+                g->rs.bodies[g->hover].shape != PL_SHAPE_SEGMENT)
+                g->grab = g->hover;
+            else
+                g->panning = 1;
+        } else if (e->button.button == SDL_BUTTON_MIDDLE) {
+            g->panning = 1;
+        } else if (e->button.button == SDL_BUTTON_RIGHT) {
+            key(g, SDLK_x, 0);
+        }
+        break;
+    case SDL_MOUSEBUTTONUP:
+        if (e->button.button == SDL_BUTTON_LEFT) release_grab(g);
+        g->panning = 0;
+        break;
+    case SDL_MOUSEWHEEL:
+        if (e->wheel.y != 0) zoom_at(g, g->mx, g->my, pow(0.85, e->wheel.y));
+        break;
+    case SDL_WINDOWEVENT:
+        if (e->window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
+            int w, h;
+            SDL_GL_GetDrawableSize(g->sdl, &w, &h);
+            if (w >= 16 && h >= 16) {
+                g->sim.ropt.width = w;
+                g->sim.ropt.height = h;
+            }
+        }
+        break;
+    default: break;
+    }
+}
+
+/* The spring of a grabbed grain: critically damped at 3 Hz, relative to the grain's mass,
+ * towards the cursor. */
+static void spring(win *g)
+{
+    if (g->grab < 0 || g->sim.stopped) return;
+    pl_body_info b;
+    if (pl_world_body_info(g->sim.w, g->grab, &b) != PL_OK || b.motion != PL_MOTION_DYNAMIC) {
+        g->grab = -1;
+        return;
+    }
+    pl_vec2 t = pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my});
+    double om = 2.0 * M_PI * 3.0;
+    pl_vec2 f = {b.mass * (om * om * (t.x - b.position.x) - 2.0 * om * b.velocity.x),
+                 b.mass * (om * om * (t.y - b.position.y) - 2.0 * om * b.velocity.y)};
+    pl_wsim_set_load(&g->sim, g->grab, f);
+}
+
+/* ------------------------------------------------------------------ main */
+
+int pl_window_main(const pl_opts *o)
+{
+    static win G;
+    win *g = &G;
+    memset(g, 0, sizeof *g);
+    g->sim.o = o;
+    if (pl_opts_has(o, "--out"))
+        snprintf(g->sim.out_dir, sizeof g->sim.out_dir, "%s", pl_opts_get(o, "--out"));
+    else
+        pl_cli_default_out(o->positional[0], g->sim.out_dir, sizeof g->sim.out_dir);
+    pl_draw_list_init(&g->sim.overlay);
+    if (pl_wsim_load(&g->sim, 0) != 0) {
+        fprintf(stderr, "porelab: %s\n", g->sim.error);
+        pl_wsim_free(&g->sim);
+        return PL_EXIT_FAIL;
+    }
+    if (pl_opts_size(o, "--size", &g->sim.ropt.width, &g->sim.ropt.height) != 0) return PL_EXIT_USAGE;
+    const char *layers = pl_opts_get(o, "--layers");
+    if (layers) {
+        char err[512];
+        if (pl_render_parse_layers(layers, &g->sim.ropt.layers, err, sizeof err) != 0) {
+            fprintf(stderr, "porelab %s: --layers: %s\n", o->cmd->command, err);
+            return PL_EXIT_USAGE;
+        }
+    }
+    g->speed = frame_interval(g);
+    long long sp = 0;
+    if (pl_opts_count(o, "--speed", 1, &sp) != 0) return PL_EXIT_USAGE;
+    if (sp > 0) g->speed = sp;
+    g->playing = !pl_opts_has(o, "--paused");
+    g->show_hud = 1;
+    g->grab = g->hover = -1;
+
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+        fprintf(stderr, "porelab: cannot open a window: %s\n  (no display? on a server use "
+                        "porelab run --renderer gl, or run the window under xvfb-run)\n",
+                SDL_GetError());
+        pl_wsim_free(&g->sim);
+        return PL_EXIT_FAIL;
+    }
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 2);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 1);
+    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    char title[PATH_MAX + 32];
+    snprintf(title, sizeof title, "porelab - %s", o->positional[0]);
+    g->sdl = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                              g->sim.ropt.width, g->sim.ropt.height,
+                              SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE);
+    g->ctx = g->sdl ? SDL_GL_CreateContext(g->sdl) : NULL;
+    char err[1024];
+    if (g->ctx) g->gl = pl_gl_create(get_proc, 0, err, sizeof err);
+    else snprintf(err, sizeof err, "%s", SDL_GetError());
+    if (!g->gl) {
+        fprintf(stderr, "porelab: cannot start OpenGL in the window: %s\n", err);
+        if (g->ctx) SDL_GL_DeleteContext(g->ctx);
+        if (g->sdl) SDL_DestroyWindow(g->sdl);
+        SDL_Quit();
+        pl_wsim_free(&g->sim);
+        return PL_EXIT_FAIL;
+    }
+    const char *vs = getenv("PORELAB_VSYNC");
+    SDL_GL_SetSwapInterval(vs && vs[0] == '0' ? 0 : 1);
+    printf("porelab view: %s on %s (%s, %d samples); h for help\n", o->positional[0],
+           pl_gl_renderer_name(g->gl), pl_gl_version(g->gl), pl_gl_samples(g->gl));
+    fflush(stdout);
+    pl_render_scene_init(&g->rs);
+    double last_watch = now_s(), t_start = now_s();
+    long frames = 0;
+    g->last_frame = now_s();
+    while (!g->quit) {
+        SDL_Event e;
+        while (SDL_PollEvent(&e)) event(g, &e);
+        double t = now_s();
+        if (t - last_watch > 0.5) {
+            last_watch = t;
+            if (pl_wsim_file_changed(&g->sim)) {
+                if (pl_wsim_load(&g->sim, 1) == 0) {
+                    message(g, "scene reloaded", 0);
+                    printf("reload: ok\n");
+                } else {
+                    printf("reload: failed, the previous scene stays: %s\n", g->sim.error);
+                }
+                fflush(stdout);
+                g->grab = -1;
+            }
+        }
+        if (g->playing && !g->sim.stopped) {
+            spring(g);
+            long long n = g->speed;
+            long long end = g->sim.plan.total_steps, now = pl_wsim_steps(&g->sim);
+            if (now < end && now + n >= end) { /* pause at the scene's end time */
+                n = end - now;
+                g->playing = 0;
+                snprintf(g->msg, sizeof g->msg, "end of the scene's run (space continues)");
+                g->msg_until = t + 4.0;
+            }
+            pl_wsim_advance(&g->sim, n);
+        }
+        if (build_scene(g) != 0) break;
+        pl_render_scene_capture(&g->rs, g->sim.w);
+        if (g->show_hud) {
+            pl_render_scene_stress(&g->rs);
+            if (pl_world_fluid_node_count(g->sim.w) > 0)
+                pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
+            g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
+        }
+        build_hud(g);
+        pl_draw_list_clear(&g->frame_dl);
+        pl_draw_list_append(&g->frame_dl, &g->scene_dl);
+        pl_draw_list_append(&g->frame_dl, &g->hud);
+        g->frame_dl.camera = g->scene_dl.camera;
+        g->frame_dl.background = g->scene_dl.background;
+        if (pl_gl_render(g->gl, &g->frame_dl, err, sizeof err) != 0) {
+            fprintf(stderr, "porelab: %s\n", err);
+            break;
+        }
+        int dw, dh;
+        SDL_GL_GetDrawableSize(g->sdl, &dw, &dh);
+        pl_gl_present(g->gl, dw, dh);
+        SDL_GL_SwapWindow(g->sdl);
+        frames++;
+        double t1 = now_s(), dt = t1 - g->last_frame;
+        g->last_frame = t1;
+        if (dt > 0) g->fps = g->fps > 0 ? 0.9 * g->fps + 0.1 / dt : 1.0 / dt;
+    }
+    double wall = now_s() - t_start;
+    printf("porelab view: %ld frames in %.2f s (mean %.1f frames per second)\n", frames, wall,
+           wall > 0 ? frames / wall : 0.0);
+    pl_render_scene_free(&g->rs);
+    pl_draw_list_free(&g->scene_dl);
+    pl_draw_list_free(&g->frame_dl);
+    pl_draw_list_free(&g->hud);
+    pl_draw_list_free(&g->tmp);
+    pl_image_free(&g->img);
+    pl_gl_destroy(&g->gl);
+    SDL_GL_DeleteContext(g->ctx);
+    SDL_DestroyWindow(g->sdl);
+    SDL_Quit();
+    pl_wsim_free(&g->sim);
+    return PL_EXIT_OK;
+}

@@ -1,0 +1,354 @@
+/* Scene, stepping, parameters and the replay log of the window (see window_sim.h). */
+#include "window_sim.h"
+#include "scene_render.h"
+
+#include <lauxlib.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static void get_mtime(const char *path, struct timespec *t)
+{
+    struct stat st;
+    if (stat(path, &st) == 0) *t = st.st_mtim;
+    else t->tv_sec = t->tv_nsec = 0;
+}
+
+int pl_wsim_file_changed(pl_wsim *sim)
+{
+    struct timespec t;
+    get_mtime(sim->o->positional[0], &t);
+    return t.tv_sec != sim->mtime.tv_sec || t.tv_nsec != sim->mtime.tv_nsec;
+}
+
+long long pl_wsim_steps(const pl_wsim *sim)
+{
+    return sim->w ? (long long)pl_world_step_count(sim->w) - sim->start_step : 0;
+}
+
+/* Reads the parameter list (result.params or the global PARAMS): a list of { name=, value=, min=, max=, step=, unit=, set=function }
+ * (set(world, value) is called between steps). Raises Lua errors (protected caller). */
+typedef struct params_ud {
+    pl_wparam *p;
+    int n;
+} params_ud;
+
+static int read_params(lua_State *L)
+{
+    params_ud *ud = lua_touserdata(L, 1);
+    ud->n = 0;
+    if (lua_isnil(L, 2)) return 0;
+    luaL_checktype(L, 2, LUA_TTABLE);
+    lua_Integer n = luaL_len(L, 2);
+    for (lua_Integer i = 1; i <= n && ud->n < PL_WSIM_MAX_PARAMS; i++) {
+        lua_geti(L, 2, i);
+        if (!lua_istable(L, -1)) luaL_error(L, "params[%d] must be a table", (int)i);
+        pl_wparam *p = &ud->p[ud->n];
+        memset(p, 0, sizeof *p);
+        lua_getfield(L, -1, "name");
+        snprintf(p->name, sizeof p->name, "%s", luaL_optstring(L, -1, "?"));
+        lua_pop(L, 1);
+        lua_getfield(L, -1, "unit");
+        snprintf(p->unit, sizeof p->unit, "%s", luaL_optstring(L, -1, ""));
+        lua_pop(L, 1);
+        const char *f[4] = {"value", "min", "max", "step"};
+        double *v[4] = {&p->value, &p->min, &p->max, &p->step};
+        for (int k = 0; k < 4; k++) {
+            lua_getfield(L, -1, f[k]);
+            if (k < 3 && !lua_isnumber(L, -1))
+                luaL_error(L, "params[%d].%s must be a number", (int)i, f[k]);
+            *v[k] = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : 0.0;
+            lua_pop(L, 1);
+        }
+        if (!(p->max > p->min)) luaL_error(L, "params[%d]: max must be > min", (int)i);
+        if (p->value < p->min || p->value > p->max)
+            luaL_error(L, "params[%d].value must be in [min, max]", (int)i);
+        if (!(p->step > 0.0)) p->step = (p->max - p->min) / 20.0;
+        lua_getfield(L, -1, "set");
+        if (!lua_isfunction(L, -1))
+            luaL_error(L, "params[%d].set must be a function(world, value)", (int)i);
+        lua_pop(L, 2);
+        p->initial = p->value;
+        ud->n++;
+    }
+    return 0;
+}
+
+/* Pushes the scene's parameter list: result.params, else the global PARAMS (scenes use the
+ * global while the scene loader does not accept a `params` field in the result table). */
+static void push_params(pl_scene *s)
+{
+    lua_State *L = pl_scene_lua(s);
+    if (pl_scene_push_result_field(s, "params") == LUA_TNIL) {
+        lua_pop(L, 1);
+        lua_getglobal(L, "PARAMS");
+    }
+}
+
+static int call_set(pl_wsim *sim, int i, double value)
+{
+    lua_State *L = pl_scene_lua(sim->s);
+    int top = lua_gettop(L);
+    push_params(sim->s);
+    lua_geti(L, -1, i + 1);
+    lua_getfield(L, -1, "set");
+    pl_scene_push_result_field(sim->s, "world");
+    lua_pushnumber(L, value);
+    int rc = lua_pcall(L, 2, 0, 0);
+    if (rc != LUA_OK) {
+        snprintf(sim->error, sizeof sim->error, "%s: params[%d].set: %s",
+                 pl_scene_path(sim->s), i + 1, lua_tostring(L, -1));
+        lua_settop(L, top);
+        return -1;
+    }
+    lua_settop(L, top);
+    return 0;
+}
+
+static int apply_event(pl_wsim *sim, const pl_wevent *e)
+{
+    switch (e->kind) {
+    case PL_WEV_PARAM:
+        if (e->index < sim->nparams) sim->params[e->index].value = e->a;
+        return e->index < sim->nparams ? call_set(sim, e->index, e->a) : 0;
+    case PL_WEV_MOTION:
+        return pl_world_set_body_motion(sim->w, e->index, (pl_motion_type)(int)e->a) == PL_OK ? 0 : -1;
+    case PL_WEV_LOAD:
+        return pl_world_set_body_load(sim->w, e->index, (pl_vec2){e->a, e->b}, 0.0) == PL_OK ? 0 : -1;
+    default: return 0;
+    }
+}
+
+static int log_event(pl_wsim *sim, pl_wevent e)
+{
+    if (sim->nlog == sim->caplog) {
+        int nc = sim->caplog ? 2 * sim->caplog : 256;
+        pl_wevent *p = realloc(sim->log, (size_t)nc * sizeof *p);
+        if (!p) return -1;
+        sim->log = p;
+        sim->caplog = nc;
+    }
+    sim->log[sim->nlog++] = e;
+    sim->replay = sim->nlog;
+    return 0;
+}
+
+/* Loads the scene into fresh state; on success replaces the current one. */
+static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
+{
+    pl_scene_options so = {sim->o->positional[0], sim->out_dir, pl_opts_has(sim->o, "--trust")};
+    pl_scene *s = pl_scene_create(&so);
+    if (!s) {
+        snprintf(sim->error, sizeof sim->error, "out of memory while creating the Lua state");
+        return -1;
+    }
+    struct timespec mt;
+    get_mtime(sim->o->positional[0], &mt);
+    if (pl_scene_load(s) != 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(s));
+        pl_scene_destroy(&s);
+        sim->mtime = mt; /* do not retry until the file changes again */
+        return -1;
+    }
+    if (!pl_scene_declarative(s) || !pl_scene_world(s)) {
+        snprintf(sim->error, sizeof sim->error, "%s returns no world (an imperative script); "
+                 "the window needs a declarative scene", pl_scene_path(s));
+        pl_scene_destroy(&s);
+        sim->mtime = mt;
+        return -1;
+    }
+    pl_world *w = pl_scene_world(s);
+    pl_render_options ropt = pl_default_render_options();
+    if (pl_scene_render_options(s, w, &ropt) != 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(s));
+        pl_scene_destroy(&s);
+        sim->mtime = mt;
+        return -1;
+    }
+    pl_run_plan plan;
+    /* the plan prints its own errors (bad --until etc.) */
+    if (pl_run_plan_make(sim->o, s, w, &plan) != 0) {
+        snprintf(sim->error, sizeof sim->error, "invalid run length or frame interval "
+                 "(see the terminal)");
+        pl_scene_destroy(&s);
+        sim->mtime = mt;
+        return -1;
+    }
+    pl_wparam params[PL_WSIM_MAX_PARAMS];
+    params_ud ud = {params, 0};
+    lua_State *L = pl_scene_lua(s);
+    int top = lua_gettop(L);
+    lua_pushcfunction(L, read_params);
+    lua_pushlightuserdata(L, &ud);
+    push_params(s);
+    if (lua_pcall(L, 2, 0, 0) != LUA_OK) {
+        snprintf(sim->error, sizeof sim->error, "%s: params: %s", pl_scene_path(s),
+                 lua_tostring(L, -1));
+        lua_settop(L, top);
+        pl_scene_destroy(&s);
+        sim->mtime = mt;
+        return -1;
+    }
+    lua_settop(L, top);
+    if (sim->s) pl_scene_destroy(&sim->s);
+    sim->s = s;
+    sim->w = w;
+    sim->scene_auto_camera = ropt.auto_camera;
+    sim->scene_view_lo = ropt.view_lo;
+    sim->scene_view_hi = ropt.view_hi;
+    if (keep_view) { /* window size, layers, colouring, camera survive reloads */
+        ropt.width = keep_view->width;
+        ropt.height = keep_view->height;
+        ropt.layers = keep_view->layers;
+        ropt.coloring = keep_view->coloring;
+        ropt.auto_camera = keep_view->auto_camera;
+        ropt.view_lo = keep_view->view_lo;
+        ropt.view_hi = keep_view->view_hi;
+        ropt.fluid_field = keep_view->fluid_field;
+        ropt.color_min = keep_view->color_min;
+        ropt.color_max = keep_view->color_max;
+    }
+    sim->ropt = ropt;
+    sim->plan = plan;
+    sim->start_step = (long long)pl_world_step_count(w);
+    sim->next_k = 0;
+    memcpy(sim->params, params, sizeof params);
+    sim->nparams = ud.n;
+    sim->mtime = mt;
+    sim->stopped = 0;
+    sim->error[0] = 0;
+    return 0;
+}
+
+int pl_wsim_load(pl_wsim *sim, int keep_params)
+{
+    int had = sim->s != NULL;
+    pl_render_options view = sim->ropt;
+    double values[PL_WSIM_MAX_PARAMS];
+    int nold = sim->nparams;
+    for (int i = 0; i < nold; i++) values[i] = sim->params[i].value;
+    if (load_fresh(sim, had ? &view : NULL) != 0) return -1;
+    sim->nlog = sim->replay = 0;
+    if (keep_params)
+        for (int i = 0; i < sim->nparams && i < nold; i++)
+            if (values[i] != sim->params[i].initial) pl_wsim_set_param(sim, i, values[i]);
+    return 0;
+}
+
+void pl_wsim_free(pl_wsim *sim)
+{
+    pl_scene_destroy(&sim->s);
+    pl_draw_list_free(&sim->overlay);
+    free(sim->log);
+    sim->log = NULL;
+    sim->nlog = sim->caplog = 0;
+}
+
+static int hook_frame(pl_wsim *sim)
+{
+    if (pl_scene_call_hook(sim->s, "on_frame", sim->next_k) != 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(sim->s));
+        sim->stopped = 1;
+        return -1;
+    }
+    sim->next_k++;
+    return 0;
+}
+
+static int apply_pending(pl_wsim *sim)
+{
+    long long now = pl_wsim_steps(sim);
+    while (sim->replay < sim->nlog && sim->log[sim->replay].step <= now) {
+        if (apply_event(sim, &sim->log[sim->replay]) != 0) {
+            if (!sim->error[0])
+                snprintf(sim->error, sizeof sim->error, "%s", pl_world_last_error(sim->w));
+            sim->stopped = 1;
+            return -1;
+        }
+        sim->replay++;
+    }
+    return 0;
+}
+
+int pl_wsim_advance(pl_wsim *sim, long long n)
+{
+    if (sim->stopped || !sim->w) return -1;
+    long long target = pl_wsim_steps(sim) + n;
+    /* frame 0 (step 0) hook: as `porelab run` calls on_frame after drawing the first frame */
+    while (1) {
+        if (apply_pending(sim) != 0) return -1;
+        long long now = pl_wsim_steps(sim);
+        while (pl_run_plan_frame_step(&sim->plan, sim->next_k) <= now)
+            if (hook_frame(sim) != 0) return -1;
+        if (now >= target) break;
+        long long stop = target;
+        long long f = pl_run_plan_frame_step(&sim->plan, sim->next_k);
+        if (f < stop) stop = f;
+        if (sim->replay < sim->nlog && sim->log[sim->replay].step < stop)
+            stop = sim->log[sim->replay].step;
+        long long k = stop - now;
+        if (k > INT_MAX) k = INT_MAX;
+        if (k <= 0) k = 1;
+        if (pl_world_step(sim->w, (int)k) != PL_OK) {
+            snprintf(sim->error, sizeof sim->error, "run stopped at t = %.6g s: %s",
+                     pl_world_time(sim->w), pl_world_last_error(sim->w));
+            sim->stopped = 1;
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int pl_wsim_rewind(pl_wsim *sim, long long step)
+{
+    if (step < 0) step = 0;
+    /* keep the interactions up to the target step */
+    int keep = 0;
+    while (keep < sim->nlog && sim->log[keep].step <= step) keep++;
+    pl_wevent *log = sim->log;
+    int caplog = sim->caplog;
+    sim->log = NULL;
+    sim->nlog = sim->caplog = 0;
+    if (load_fresh(sim, &sim->ropt) != 0) {
+        sim->log = log;
+        sim->caplog = caplog;
+        sim->nlog = keep;
+        return -1;
+    }
+    sim->log = log;
+    sim->caplog = caplog;
+    sim->nlog = keep;
+    sim->replay = 0;
+    int rc = pl_wsim_advance(sim, step);
+    if (rc == 0) rc = apply_pending(sim);
+    return rc;
+}
+
+int pl_wsim_set_param(pl_wsim *sim, int i, double value)
+{
+    if (i < 0 || i >= sim->nparams || !sim->w) return -1;
+    pl_wparam *p = &sim->params[i];
+    value = fmin(p->max, fmax(p->min, value));
+    pl_wevent e = {pl_wsim_steps(sim), PL_WEV_PARAM, i, value, 0.0};
+    if (apply_event(sim, &e) != 0) return -1;
+    return log_event(sim, e);
+}
+
+int pl_wsim_set_motion(pl_wsim *sim, int body, pl_motion_type motion)
+{
+    pl_wevent e = {pl_wsim_steps(sim), PL_WEV_MOTION, body, (double)motion, 0.0};
+    if (apply_event(sim, &e) != 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_world_last_error(sim->w));
+        return -1;
+    }
+    return log_event(sim, e);
+}
+
+int pl_wsim_set_load(pl_wsim *sim, int body, pl_vec2 force)
+{
+    pl_wevent e = {pl_wsim_steps(sim), PL_WEV_LOAD, body, force.x, force.y};
+    if (apply_event(sim, &e) != 0) return -1;
+    return log_event(sim, e);
+}

@@ -1,0 +1,114 @@
+#!/bin/sh
+# The live window under Xvfb, driven by xdotool (label gl):
+#  1. keys (hide HUD, single frames, screenshot): the screenshot and the window's own pixels
+#     (captured with XGetImage) equal the headless GL render of the same state (PSNR >= 40 dB;
+#     measured: identical, both llvmpipe);
+#  2. rewind: step, screenshot, rewind one frame, step again, screenshot: identical pictures;
+#  3. mouse wheel zoom: the window shows the zoomed screenshot, which differs from the
+#     unzoomed render; 'z' restores the fitted view;
+#  4. a scene parameter (up arrow on the selected parameter) changes what happens;
+#  5. the scene file is watched: a syntax error is reported and the previous scene stays,
+#     fixing the file reloads it.
+#   test_window_xvfb.sh PORELAB GL_PSNR GL_XCAPTURE SOURCE_DIR OUT_DIR
+set -u
+P=$1; PSNR=$2; CAP=$3; SRC=$4; OUT=$5
+rm -rf "$OUT"; mkdir -p "$OUT"
+XPID=""; VPID=""
+cleanup() {
+  [ -n "$VPID" ] && kill "$VPID" 2>/dev/null
+  [ -n "$XPID" ] && kill "$XPID" 2>/dev/null
+}
+trap cleanup EXIT
+fail() { echo "FAIL: $*"; echo "--- window log:"; cat "$OUT/view.log" 2>/dev/null; exit 1; }
+
+n=91
+while [ -e /tmp/.X11-unix/X$n ] || [ -e /tmp/.X$n-lock ]; do n=$((n + 1)); done
+Xvfb :$n -screen 0 1024x768x24 -nolisten tcp >"$OUT/xvfb.log" 2>&1 &
+XPID=$!
+export DISPLAY=:$n
+i=0; while [ ! -e /tmp/.X11-unix/X$n ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+
+cp "$SRC/scenes/lab/buoyancy.lua" "$OUT/scene.lua"
+"$P" view "$OUT/scene.lua" --paused --size 640x480 --out "$OUT/v" >"$OUT/view.log" 2>&1 &
+VPID=$!
+W=$(timeout 20 xdotool search --sync --name "porelab - $OUT/scene.lua" | head -1)
+[ -n "$W" ] || fail "the window did not appear"
+grep -q "porelab view" "$OUT/view.log" || fail "no start line"
+
+# waits until the log has N screenshot lines; prints the last one's time
+shots() { grep -c '^screenshot:' "$OUT/view.log"; }
+wait_shots() {
+  i=0; while [ "$(shots)" -lt "$1" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+  [ "$(shots)" -ge "$1" ] || fail "screenshot $1 was not written"
+  sleep 0.3 # the next frame is on screen
+}
+shot_time() { grep '^screenshot:' "$OUT/view.log" | sed -n "${1}p" | sed 's/.*(t = \([^ ]*\) s.*/\1/'; }
+key() { xdotool key --window "$W" --delay 60 "$@"; }
+
+# 1. keys; the window and the screenshot against the headless render
+key i s s s p
+wait_shots 1
+"$CAP" "$W" "$OUT/window_1.png" || fail "capture"
+T=$(shot_time 1)
+"$P" still "$OUT/scene.lua" --at "$T" --size 640x480 -o "$OUT/headless_1.png" --renderer gl \
+  --out "$OUT/h" -q || fail "headless still"
+p1=$("$PSNR" "$OUT/v/screenshot_000.png" "$OUT/headless_1.png" 40) || fail "screenshot vs headless $p1 dB"
+p2=$("$PSNR" "$OUT/window_1.png" "$OUT/headless_1.png" 40) || fail "window vs headless $p2 dB"
+echo "t = $T s: screenshot vs headless $p1 dB, window pixels vs headless $p2 dB"
+
+# 2. rewind determinism
+key s p
+wait_shots 2
+key Left s p
+wait_shots 3
+grep -q '^rewind: ' "$OUT/view.log" || fail "no rewind"
+p3=$("$PSNR" "$OUT/v/screenshot_001.png" "$OUT/v/screenshot_002.png" 200) || fail "rewound replay differs ($p3 dB)"
+echo "rewind one frame and replay: $p3 dB (identical)"
+
+# 3. wheel zoom at the window centre, then back
+xdotool mousemove --window "$W" 320 240
+xdotool click --window "$W" 4 click --window "$W" 4 click --window "$W" 4
+sleep 0.3
+key p
+wait_shots 4
+"$CAP" "$W" "$OUT/window_zoom.png" || fail "capture"
+p4=$("$PSNR" "$OUT/window_zoom.png" "$OUT/v/screenshot_003.png" 40) || fail "zoomed window vs screenshot $p4 dB"
+if p5=$("$PSNR" "$OUT/v/screenshot_003.png" "$OUT/v/screenshot_002.png" 30); then fail "zoom changed nothing ($p5 dB)"; fi
+key z p
+wait_shots 5
+p6=$("$PSNR" "$OUT/v/screenshot_004.png" "$OUT/v/screenshot_002.png" 200) || fail "z did not restore the view ($p6 dB)"
+echo "zoom: window = screenshot ($p4 dB), differs from unzoomed ($p5 dB); z restores ($p6 dB)"
+
+# 4. a parameter: the wood block (first parameter) made denser than water sinks
+key Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up Up
+key s s s s s s s s s s s s s s s p
+wait_shots 6
+T=$(shot_time 6)
+"$P" still "$OUT/scene.lua" --at "$T" --size 640x480 -o "$OUT/headless_6.png" --renderer gl \
+  --out "$OUT/h" -q || fail "headless still 6"
+if p7=$("$PSNR" "$OUT/v/screenshot_005.png" "$OUT/headless_6.png" 40); then
+  fail "raising the wood density changed nothing ($p7 dB)"
+fi
+echo "wood density 600 -> 3000 kg/m3: differs from the unchanged scene ($p7 dB)"
+
+# 5. the file watch: a syntax error keeps the scene, a fix reloads it
+sleep 1.1 # a new modification time
+echo "this is not lua (" >>"$OUT/scene.lua"
+i=0; while ! grep -q '^reload: failed' "$OUT/view.log" && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+grep -q '^reload: failed' "$OUT/view.log" || fail "the syntax error was not reported"
+grep '^reload: failed' "$OUT/view.log" | grep -q "scene.lua:" || fail "the error does not name the file"
+key p
+wait_shots 7
+p8=$("$PSNR" "$OUT/v/screenshot_006.png" "$OUT/v/screenshot_005.png" 200) || fail "the previous scene did not stay ($p8 dB)"
+sleep 1.1
+cp "$SRC/scenes/lab/buoyancy.lua" "$OUT/scene.lua"
+i=0; while ! grep -q '^reload: ok' "$OUT/view.log" && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+grep -q '^reload: ok' "$OUT/view.log" || fail "fixing the file did not reload it"
+echo "file watch: syntax error reported, previous scene kept ($p8 dB), fix reloaded"
+
+key q
+i=0; while kill -0 "$VPID" 2>/dev/null && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+kill -0 "$VPID" 2>/dev/null && fail "q did not close the window"
+wait "$VPID" || fail "the window exited with an error"
+VPID=""
+echo ok
