@@ -145,12 +145,15 @@ void pl__integrate(pl_world *w, double dt) {
         }
         if (!moved) {
             const double dx = pos[i].x - w->pos_at_build[i].x, dy = pos[i].y - w->pos_at_build[i].y;
-            double d2 = dx * dx + dy * dy;
-            if (w->shape[i] != PL_SHAPE_DISC) {
-                const double d = sqrt(d2) + fabs(w->angle[i] - w->angle_at_build[i]) * w->radius[i];
-                d2 = d * d;
+            const double d2 = dx * dx + dy * dy;
+            if (w->shape[i] == PL_SHAPE_DISC) {
+                moved = d2 > lim2;
+            } else {
+                /* a turning outline sweeps up to |dtheta| x bounding radius more:
+                   |dx| + rot > lim  <=>  |dx| > lim - rot (no square root) */
+                const double rot = fabs(w->angle[i] - w->angle_at_build[i]) * w->radius[i];
+                moved = rot >= lim || d2 > (lim - rot) * (lim - rot);
             }
-            moved = d2 > lim2;
         }
         if (track) {
             damped -= (tl[i].dfx * vm.x + tl[i].dfy * vm.y + tl[i].dm * wm) * dt;
