@@ -20,6 +20,7 @@ if [ "$what" = all ] || [ "$what" = dem ]; then
   "$build/tests/bench_dem" --label discs_5978 --csv "$csv"
   "$build/tests/bench_dem" --label discs_5978_no_energy --no-energy --csv "$csv"
   "$build/tests/bench_dem" --label discs_20k --columns 98 --rows 204 --settle 0.8 --settle-dt 2e-5 --steps 5000 --csv "$csv"
+  "$build/tests/bench_dem" --label polygons_5k --polygons --columns 49 --rows 102 --settle 0.3 --settle-dt 2e-5 --steps 2000 --csv "$csv"
   echo "== grains: LIGGGHTS (same packing, same core count) =="
   "$here/run_liggghts.sh" 20000 | tee "$out/liggghts.txt"
 fi
