@@ -8,9 +8,11 @@ PKGS=(
   liblua5.4-dev lua5.4
   libcairo2-dev libfreetype-dev libpng-dev fonts-dejavu-core
   libsuitesparse-dev libopenblas-dev
-  libplplot-dev
+  libplplot-dev plplot-driver-cairo
+  libosmesa6-dev libsdl2-dev
 )
-OPTIONAL=(ffmpeg)
+# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server.
+OPTIONAL=(ffmpeg xvfb xdotool)
 missing=()
 for p in "${PKGS[@]}" "${OPTIONAL[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

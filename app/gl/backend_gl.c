@@ -22,7 +22,7 @@ typedef struct gv {
 struct pl_gl {
     pl_gl_funcs f;
     GLuint prog, vbo, ibo, tex, vao;
-    GLint u_size, u_tex;
+    GLint u_size, u_tex, u_clip, u_fsize;
     GLuint fbo_ms, rb_color_ms, rb_depth_ms, fbo_res, rb_color_res;
     int fb_w, fb_h, samples, max_size;
     int width, height; /* size of the last render */
@@ -32,6 +32,7 @@ struct pl_gl {
     uint32_t *ix; long ni, ci;
     int failed;
     float z;
+    float clip_mode; /* 8 when the current primitive is clipped to dl->clip, else 0 */
     char renderer[128], version[128];
 };
 
@@ -61,6 +62,8 @@ static const char *vs_src =
 static const char *fs_src =
     "#version 120\n"
     "uniform sampler2D u_tex;\n"
+    "uniform vec4 u_clip;\n"   /* x0, y0, x1, y1 in pixels, y down */
+    "uniform vec2 u_fsize;\n"
     "varying vec4 v_c0;\n"
     "varying vec4 v_c1;\n"
     "varying vec4 v_p;\n"
@@ -70,12 +73,21 @@ static const char *fs_src =
     "}\n"
     "void main() {\n"
     "  vec4 c;\n"
-    "  if (v_mode < 0.5) {\n"
+    "  float mode = v_mode;\n"
+    "  if (mode > 7.5) {\n" /* world-space primitive clipped to the plot area */
+    "    vec2 q = vec2(gl_FragCoord.x, u_fsize.y - gl_FragCoord.y);\n"
+    "    if (q.x < u_clip.x || q.x >= u_clip.z || q.y < u_clip.y || q.y >= u_clip.w) discard;\n"
+    "    mode -= 8.0;\n"
+    "  }\n"
+    "  if (mode < 0.5) {\n"
     "    c = vec4(v_c0.rgb * v_c0.a, v_c0.a);\n"
-    "  } else if (v_mode < 1.5) {\n"
-    "    float a = texture2D(u_tex, v_p.xy).r * v_c0.a;\n"
+    "  } else if (mode < 1.5) {\n"
+    /* unrotated glyphs (p.z = atlas size) sample exact texel centres, so the picture does
+     * not depend on where the glyph sits in the atlas; rotated ones (p.z = 0) filter */
+    "    vec2 uv = v_p.z > 0.0 ? (floor(v_p.xy * v_p.z) + 0.5) / v_p.z : v_p.xy;\n"
+    "    float a = texture2D(u_tex, uv).r * v_c0.a;\n"
     "    c = vec4(v_c0.rgb * a, a);\n"
-    "  } else if (v_mode < 2.5) {\n"
+    "  } else if (mode < 2.5) {\n"
     "    float d = length(v_p.xy);\n"
     "    float r = v_p.z, hw = 0.5 * v_p.w;\n"
     "    float cf = clamp(r - d + 0.5, 0.0, 1.0);\n"
@@ -234,6 +246,8 @@ pl_gl *pl_gl_create(pl_gl_get_proc get_proc, int samples, char *err, size_t errl
     }
     g->u_size = g->f.GetUniformLocation(g->prog, "u_size");
     g->u_tex = g->f.GetUniformLocation(g->prog, "u_tex");
+    g->u_clip = g->f.GetUniformLocation(g->prog, "u_clip");
+    g->u_fsize = g->f.GetUniformLocation(g->prog, "u_fsize");
     if (g->f.GenVertexArrays && g->f.BindVertexArray) {
         g->f.GenVertexArrays(1, &g->vao);
         g->f.BindVertexArray(g->vao);
@@ -279,6 +293,11 @@ void pl_gl_destroy(pl_gl **gp)
     free(g->ix);
     free(g);
     *gp = NULL;
+}
+
+double pl_gl_text_width(pl_gl *g, const char *s, float size)
+{
+    return pl_text_advance(&g->atlas, s, size);
 }
 
 const char *pl_gl_renderer_name(const pl_gl *g) { return g->renderer; }
@@ -340,7 +359,7 @@ static gv *vert(pl_gl *g, double x, double y, const uint8_t c0[4], float mode)
     memcpy(v->c0, c0, 4);
     memset(v->c1, 0, 4);
     v->p[0] = v->p[1] = v->p[2] = v->p[3] = 0.0f;
-    v->mode = mode;
+    v->mode = mode + g->clip_mode;
     return v;
 }
 
@@ -373,7 +392,7 @@ static void add_circle(pl_gl *g, pl_vec2 c, double r, const pl_prim *p)
     }
     if (reserve(g, 4, 6)) return;
     next_depth(g);
-    double e = r + 0.5 * w + 1.0;
+    double e = r + 0.5 * w + 0.75; /* coverage is zero beyond r + w/2 + 0.5 */
     uint32_t b = (uint32_t)g->nv;
     static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
     for (int k = 0; k < 4; k++) {
@@ -396,7 +415,7 @@ static void add_capsule(pl_gl *g, pl_vec2 a, pl_vec2 b, double w, const uint8_t 
     if (L > 1e-9) { ux = dx / L; uy = dy / L; }
     else L = 0.0;
     if (butt && L == 0.0) return;
-    double nx = -uy, ny = ux, hw = 0.5 * w, e = hw + 1.0;
+    double nx = -uy, ny = ux, hw = 0.5 * w, e = hw + 0.75; /* zero coverage beyond hw + 0.5 */
     if (reserve(g, 4, 6)) return;
     uint32_t base = (uint32_t)g->nv;
     const double along[4] = {-e, L + e, L + e, -e}, across[4] = {-e, -e, e, e};
@@ -559,12 +578,43 @@ static void add_triangles(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
     next_depth(g);
     const pl_vec2 *pts = dl->points + p->first;
     const pl_rgba *cols = dl->colors + p->color_first;
-    for (int k = 0; k < 3 * nt; k++) {
-        uint8_t c[4];
-        to_u8(c, cols[k]);
-        pl_vec2 q = pl_dl_px(dl, p, pts[k]);
-        g->ix[g->ni++] = (uint32_t)g->nv;
-        vert(g, q.x, q.y, c, MODE_SOLID);
+    /* Each triangle is grown by 0.3 px (edges moved outward, mitred corners, capped): field
+     * meshes refined adaptively have T-junctions, whose rounding gaps multisampling would
+     * show as thin light seams. The batch shares one depth value, so the overlaps are drawn
+     * once and colours are continuous across edges. */
+    const double d = 0.3;
+    for (int t = 0; t < nt; t++) {
+        pl_vec2 q[3];
+        for (int k = 0; k < 3; k++) q[k] = pl_dl_px(dl, p, pts[3 * t + k]);
+        double area2 = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
+        double sgn = area2 > 0 ? 1.0 : -1.0;
+        pl_vec2 n[3]; /* outward unit normal of edge k (from q[k] to q[k+1]) */
+        int ok = area2 != 0.0;
+        for (int k = 0; k < 3 && ok; k++) {
+            pl_vec2 a = q[k], b = q[(k + 1) % 3];
+            double ex = b.x - a.x, ey = b.y - a.y, l = sqrt(ex * ex + ey * ey);
+            if (!(l > 1e-9)) { ok = 0; break; }
+            n[k] = (pl_vec2){sgn * ey / l, -sgn * ex / l};
+        }
+        for (int k = 0; k < 3; k++) {
+            uint8_t c[4];
+            to_u8(c, cols[3 * t + k]);
+            double x = q[k].x, y = q[k].y;
+            if (ok) {
+                pl_vec2 n1 = n[(k + 2) % 3], n2 = n[k]; /* the two edges meeting at q[k] */
+                double dot = n1.x * n2.x + n1.y * n2.y;
+                double ox = (n1.x + n2.x), oy = (n1.y + n2.y);
+                double f = d / (1.0 + dot > 1e-6 ? 1.0 + dot : 1e-6);
+                ox *= f;
+                oy *= f;
+                double len = sqrt(ox * ox + oy * oy);
+                if (len > 4.0 * d) { ox *= 4.0 * d / len; oy *= 4.0 * d / len; }
+                x += ox;
+                y += oy;
+            }
+            g->ix[g->ni++] = (uint32_t)g->nv;
+            vert(g, x, y, c, MODE_SOLID);
+        }
     }
 }
 
@@ -595,7 +645,8 @@ static void add_arrow(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
 }
 
 /* Text as in the cairo backend: horizontal anchor from the advance width, vertical anchor
- * from the cap height (0.729 em) or the descent; glyphs at whole pixels when unrotated. */
+ * from the cap height (0.729 em) or the descent; glyphs at whole pixels when unrotated; a
+ * halo is a background box (padding 0.18 em) in the halo colour. */
 static void add_text(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
 {
     const char *s = dl->text + p->text;
@@ -619,15 +670,27 @@ static void add_text(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
     double ca = cos(-p->angle), sa = sin(-p->angle);
     int rotated = p->angle != 0.0f;
     const double inv = 1.0 / PL_ATLAS_SIZE;
-    for (int pass = p->has_halo ? 0 : 1; pass < 2; pass++) {
+    if (p->has_halo) { /* a background box a little larger than the text, as cairo */
+        double pad = 0.18 * size;
+        double bx0 = x - pad, by0 = y - cap - pad, bx1 = x + adv + pad, by1 = y + pad;
+        const double lx[4] = {bx0, bx1, bx1, bx0}, ly[4] = {by0, by0, by1, by1};
+        uint8_t bc[4];
+        to_u8(bc, p->stroke);
+        if (reserve(g, 4, 6)) return;
+        next_depth(g);
+        uint32_t base = (uint32_t)g->nv;
+        for (int k = 0; k < 4; k++)
+            vert(g, at.x + lx[k] * ca - ly[k] * sa, at.y + lx[k] * sa + ly[k] * ca, bc, MODE_SOLID);
+        quad_idx(g, base);
+    }
+    {
         uint8_t col[4];
-        to_u8(col, pass == 0 ? p->stroke : p->fill);
+        to_u8(col, p->fill);
         double pen = x;
         for (const char *q = s; *q;) {
             uint32_t c = pl_utf8_next(&q);
-            const pl_glyph *gl = pl_glyph_get(&g->atlas, c, size, pass == 0);
-            const pl_glyph *adv_g = pass == 0 ? pl_glyph_get(&g->atlas, c, size, 0) : gl;
-            if (!gl || !adv_g) continue;
+            const pl_glyph *gl = pl_glyph_get(&g->atlas, c, size, 0);
+            if (!gl) continue;
             if (gl->w > 0 && gl->h > 0) {
                 if (reserve(g, 4, 6)) return;
                 next_depth(g);
@@ -651,10 +714,11 @@ static void add_text(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
                                  MODE_GLYPH);
                     v->p[0] = (float)(u[k] * inv);
                     v->p[1] = (float)(vv[k] * inv);
+                    v->p[2] = rotated ? 0.0f : (float)PL_ATLAS_SIZE;
                 }
                 quad_idx(g, base);
             }
-            pen += adv_g->advance;
+            pen += gl->advance;
         }
     }
 }
@@ -666,6 +730,7 @@ static void build(pl_gl *g, const pl_draw_list *dl)
     g->z = 1.0f;
     for (int i = 0; i < dl->prim_count; i++) {
         const pl_prim *p = &dl->prims[i];
+        g->clip_mode = dl->has_clip && p->space == PL_SPACE_WORLD ? 8.0f : 0.0f;
         switch (p->kind) {
         case PL_PRIM_CIRCLE:
             add_circle(g, pl_dl_px(dl, p, dl->points[p->first]), pl_dl_px_radius(dl, p), p);
@@ -740,6 +805,9 @@ ok:
     if (g->ni > 0) {
         f->UseProgram(g->prog);
         f->Uniform2f(g->u_size, (float)w, (float)h);
+        f->Uniform2f(g->u_fsize, (float)w, (float)h);
+        f->Uniform4f(g->u_clip, (float)dl->clip.x0, (float)dl->clip.y0, (float)dl->clip.x1,
+                     (float)dl->clip.y1);
         f->Uniform1i(g->u_tex, 0);
         f->ActiveTexture(GL_TEXTURE0);
         f->BindTexture(GL_TEXTURE_2D, g->tex);

@@ -10,9 +10,13 @@
 /// - translucent strokes of polygons, polylines and segment batches: quads plus round-join
 ///   fans, drawn once per primitive thanks to a per-primitive depth value (GL_LESS), so a
 ///   translucent stroke is not darker where its pieces overlap (cairo strokes one path);
-/// - filled polygons: fan (convex) or ear clipping (concave); Gouraud triangles: vertex colours;
+/// - filled polygons: fan (convex) or ear clipping (concave); Gouraud triangles: vertex colours,
+///   each grown by 0.3 px so T-junctions of adaptively refined field meshes leave no seams;
 /// - arrows: butt shaft + filled head, as in the cairo backend;
-/// - text: textured quads from a FreeType glyph atlas (gl_text.h), halo glyphs first.
+/// - text: textured quads from a FreeType glyph atlas (gl_text.h); with a halo, on a box of
+///   the halo colour (as the cairo backend).
+/// World-space primitives are clipped to dl->clip when dl->has_clip (per pixel centre, in the
+/// fragment shader, so one draw call still keeps painter's order).
 /// Geometry edges are antialiased by multisampling in an offscreen
 /// framebuffer (4 samples by default), resolved into a single-sample one that is read back or shown in the window.
 #ifndef PORELAB_BACKEND_GL_H
@@ -40,6 +44,9 @@ int pl_gl_read(pl_gl *g, pl_image *img, char *err, size_t errlen);
 /// Copies the last render into the default framebuffer (a window of win_w x win_h pixels),
 /// at the top-left corner.
 void pl_gl_present(pl_gl *g, int win_w, int win_h);
+
+/// Advance width of a string in the backend's font at size px (what the text will occupy).
+double pl_gl_text_width(pl_gl *g, const char *s, float size);
 
 /// GL_RENDERER and GL_VERSION strings, and the multisample count in use.
 const char *pl_gl_renderer_name(const pl_gl *g);

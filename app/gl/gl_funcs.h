@@ -54,6 +54,7 @@ typedef void *(*pl_gl_get_proc)(const char *name);
     X(void, UseProgram, (GLuint))                                                             \
     X(GLint, GetUniformLocation, (GLuint, const GLchar *))                                    \
     X(void, Uniform2f, (GLint, GLfloat, GLfloat))                                             \
+    X(void, Uniform4f, (GLint, GLfloat, GLfloat, GLfloat, GLfloat))                           \
     X(void, Uniform1i, (GLint, GLint))                                                        \
     X(void, BindAttribLocation, (GLuint, GLuint, const GLchar *))                             \
     X(void, EnableVertexAttribArray, (GLuint))                                                \

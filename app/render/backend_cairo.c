@@ -155,14 +155,14 @@ static void draw_text(cairo_t *cr, const pl_draw_list *dl, const pl_prim *p) {
     cairo_save(cr);
     cairo_translate(cr, at.x, at.y);
     if (p->angle != 0.0f) cairo_rotate(cr, -p->angle);
+    if (p->has_halo) { /* a background box a little larger than the text */
+        double pad = 0.18 * p->size;
+        set_color(cr, p->stroke);
+        cairo_rectangle(cr, x - pad, y - cap - pad, te.x_advance + 2.0 * pad, cap + 2.0 * pad);
+        cairo_fill(cr);
+    }
     cairo_move_to(cr, x, y);
     cairo_text_path(cr, s);
-    if (p->has_halo) {
-        set_color(cr, p->stroke);
-        cairo_set_line_width(cr, 0.22 * p->size);
-        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        cairo_stroke_preserve(cr);
-    }
     set_color(cr, p->fill);
     cairo_fill(cr);
     cairo_restore(cr);
@@ -198,8 +198,19 @@ int pl_cairo_draw(cairo_t *cr, const pl_draw_list *dl, char *err, size_t errlen)
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
     const double two_pi = 6.283185307179586;
+    int clipped = 0;
     for (int i = 0; i < dl->prim_count; i++) {
         const pl_prim *p = &dl->prims[i];
+        if (dl->has_clip && p->space == PL_SPACE_WORLD && !clipped) {
+            cairo_save(cr);
+            cairo_rectangle(cr, dl->clip.x0, dl->clip.y0, dl->clip.x1 - dl->clip.x0,
+                            dl->clip.y1 - dl->clip.y0);
+            cairo_clip(cr);
+            clipped = 1;
+        } else if (clipped && p->space != PL_SPACE_WORLD) {
+            cairo_restore(cr);
+            clipped = 0;
+        }
         switch (p->kind) {
         case PL_PRIM_CIRCLE: {
             pl_vec2 c = pl_dl_px(dl, p, dl->points[p->first]);
@@ -237,6 +248,7 @@ int pl_cairo_draw(cairo_t *cr, const pl_draw_list *dl, char *err, size_t errlen)
         default: break;
         }
     }
+    if (clipped) cairo_restore(cr);
     cairo_status_t st = cairo_status(cr);
     if (st != CAIRO_STATUS_SUCCESS) {
         snprintf(err, errlen, "cairo: %s", cairo_status_to_string(st));

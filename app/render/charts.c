@@ -137,7 +137,7 @@ static void draw_chart(const pl_chart_def *d, cairo_t *cr, double xlo, double xh
     pladv(0);
     /* character height scales with the chart: about 1/40 of its smaller side */
     double side_mm = (d->width < d->height ? d->width : d->height) * 25.4 / 72.0;
-    double ch = side_mm / 62.0;
+    double ch = side_mm / 54.0;
     plschr(ch, 1.0);
     plssym(ch * 0.9, 1.0);
     double has_title = d->title && *d->title;
@@ -187,7 +187,7 @@ static void draw_chart(const pl_chart_def *d, cairo_t *cr, double xlo, double xh
             if (se->style == PL_SERIES_POINTS || se->style == PL_SERIES_LINE_POINTS) {
                 pllsty(1);
                 plwidth(1.5);
-                plstring(m, xs, ys, "#(850)");
+                plstring(m, xs, ys, "\xe2\x97\x8b"); /* U+25CB white circle */
                 plwidth(se->line_width > 0.0 ? se->line_width : 2.0);
             }
         }
@@ -214,7 +214,7 @@ static void draw_chart(const pl_chart_def *d, cairo_t *cr, double xlo, double xh
             ssc[n] = 1.0;
             snum[n] = 1;
             text[n] = se->name;
-            sym[n] = "#(850)";
+            sym[n] = "\xe2\x97\x8b";
             n++;
         }
         if (n > 0) {

@@ -11,7 +11,7 @@ static const pl_rgba ink = {0.13f, 0.13f, 0.15f, 1.0f};
 float pl_render_font_size(int width, int height) {
     double m = width < height ? width : height;
     double fs = m / 38.0;
-    if (fs < 10.0) fs = 10.0;
+    if (fs < 11.0) fs = 11.0;
     if (fs > 30.0) fs = 30.0;
     return (float)fs;
 }

@@ -124,8 +124,13 @@ void pl_draw_isolines(pl_draw_list *dl, const pl_isolines *iso, const pl_isoline
         if (nlab < 1) nlab = 1;
         char txt[64];
         snprintf(txt, sizeof txt, st->label_format ? st->label_format : "%g", iso->levels[l]);
+        /* stagger neighbouring lines (golden-ratio offsets) so labels do not form a column */
+        double shift = fmod(0.618033988749895 * l, 1.0) - 0.5;
         for (int k = 0; k < nlab; k++) {
-            double target = total * (k + 0.5) / nlab, s = 0.0;
+            double f0 = (k + 0.5 + 0.6 * shift) / nlab;
+            if (f0 < 0.1) f0 = 0.1;
+            if (f0 > 0.9) f0 = 0.9;
+            double target = total * f0, s = 0.0;
             for (int i = 0; i < segs; i++) {
                 pl_vec2 p = pl_camera_to_px(cam, pts[i]), q = pl_camera_to_px(cam, pts[(i + 1) % n]);
                 double len = hypot(q.x - p.x, q.y - p.y);

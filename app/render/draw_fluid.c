@@ -34,6 +34,7 @@ int pl_render_scene_set_fluid(pl_render_scene *s, const pl_vec2 *nodes, const do
                               int node_count, const int *tris, const pl_vec2 *velocity,
                               int tri_count, int field) {
     s->fluid_node_count = s->fluid_tri_count = 0;
+    s->fluid_conductivity = 0.0;
     if (node_count <= 0 || tri_count <= 0) return 0;
     if (reserve_fluid(s, node_count, tri_count)) return -1;
     memcpy(s->fluid_nodes, nodes, (size_t)node_count * sizeof *nodes);
@@ -67,6 +68,11 @@ int pl_render_scene_capture_fluid(pl_render_scene *s, pl_world *w, int field) {
         s->fluid_velocity[t].x = t < nx ? tmp[t] : 0.0;
         s->fluid_velocity[t].y = t < ny ? tmp[nt + t] : 0.0;
     }
+    s->fluid_conductivity = 0.0;
+    int nk = pl_world_fluid_copy_element_field(w, PL_FLUID_PERM_X, tmp, nt);
+    int nk2 = pl_world_fluid_copy_element_field(w, PL_FLUID_PERM_Y, tmp + nt, nt);
+    for (int t = 0; t < nk; t++) s->fluid_conductivity = fmax(s->fluid_conductivity, tmp[t]);
+    for (int t = 0; t < nk2; t++) s->fluid_conductivity = fmax(s->fluid_conductivity, tmp[nt + t]);
     free(tmp);
     s->fluid_node_count = nn > 0 ? nn : 0;
     s->fluid_tri_count = nt > 0 ? nt : 0;
@@ -88,7 +94,9 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
     int field = s->fluid_field;
     int is_pa = field == PL_FLUID_PRESSURE || field == PL_FLUID_EXCESS_PRESSURE;
     *map = PL_CMAP_SEQUENTIAL;
-    if (field == PL_FLUID_EXCESS_PRESSURE || (lo < 0.0 && hi > 0.0 && is_pa)) {
+    /* signed fields get the diverging map centred on zero: excess pressure always, pressure
+     * when suction is a real part of the field (not just round-off at a free surface) */
+    if (field == PL_FLUID_EXCESS_PRESSURE || (is_pa && lo < 0.0 && -lo > 0.1 * fabs(hi))) {
         double m = fmax(fabs(lo), fabs(hi));
         lo = -m;
         hi = m;
@@ -152,10 +160,18 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
         pl_isolines_init(&iso);
         if (pl_isolines_extract(nodes, s->fluid_node_count, tris, nt, s->fluid_values, levels, nl,
                                 &iso) == 0) {
-            /* labels in display units */
+            /* labels in display units, with the unit ("2 kPa") */
             for (int l = 0; l < iso.line_count; l++) iso.levels[l] *= uf;
             pl_isoline_style st = pl_default_isoline_style();
-            st.label_size = 0.8f * pl_render_font_size(dl->camera.width, dl->camera.height);
+            float fs = pl_render_font_size(dl->camera.width, dl->camera.height);
+            st.label_size = fmaxf(10.5f, 0.85f * fs);
+            char fmt[32];
+            const char *open = strrchr(label, '('), *close = strrchr(label, ')');
+            if (open && close && close > open + 1 && close - open < 12)
+                snprintf(fmt, sizeof fmt, "%%g %.*s", (int)(close - open - 1), open + 1);
+            else
+                snprintf(fmt, sizeof fmt, "%%g");
+            st.label_format = fmt;
             pl_draw_isolines(dl, &iso, &st);
         } else {
             dl->failed = 1;
@@ -165,8 +181,7 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
     double vscale = 0.0;
     if (layers & PL_LAYER_VELOCITY) {
         dl->current_layer = 6;
-        /* arrows at element centroids; automatic scale: the fastest arrow spans 1.5 times the
-         * typical element size */
+        /* provisional automatic scale (refined per screen cell below) */
         double vmax_v = 0.0, area = 0.0;
         for (int t = 0; t < nt; t++) {
             double v = hypot(s->fluid_velocity[t].x, s->fluid_velocity[t].y);
@@ -175,20 +190,52 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
             area += 0.5 * fabs((b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y));
         }
         double h = sqrt(area / nt);
-        vscale = opt->velocity_scale > 0.0 ? opt->velocity_scale : (vmax_v > 0.0 ? 1.5 * h / vmax_v : 0.0);
+        /* still water: round-off velocities (hydraulic gradient below 1e-9) draw nothing */
+        if (s->fluid_conductivity > 0.0 && vmax_v < 1e-9 * s->fluid_conductivity) vmax_v = 0.0;
+        vscale = vmax_v > 0.0 ? (opt->velocity_scale > 0.0 ? opt->velocity_scale : 1.5 * h / vmax_v) : 0.0;
         if (vscale > 0.0) {
-            pl_vec2 *at = malloc((size_t)nt * sizeof *at);
-            if (!at) {
+            /* one arrow per screen cell of about 2.5 font sizes: the mean velocity of the
+             * elements whose centroids fall in the cell, drawn at their mean centroid */
+            float fs = pl_render_font_size(dl->camera.width, dl->camera.height);
+            double cell = fmax(14.0, 2.5 * fs);
+            int gx = (int)(dl->camera.width / cell) + 1, gy = (int)(dl->camera.height / cell) + 1;
+            size_t ncell = (size_t)gx * (size_t)gy;
+            double *acc = calloc(ncell * 5u, sizeof *acc); /* sum x, y, vx, vy, count */
+            pl_vec2 *at = malloc(ncell * sizeof *at), *vv = malloc(ncell * sizeof *vv);
+            if (!acc || !at || !vv) {
+                free(acc); free(at); free(vv);
                 dl->failed = 1;
                 return 0.0;
             }
+            double vcell = 0.0;
             for (int t = 0; t < nt; t++) {
                 const pl_vec2 *a = &nodes[tris[3 * t]], *b = &nodes[tris[3 * t + 1]], *c = &nodes[tris[3 * t + 2]];
-                at[t].x = (a->x + b->x + c->x) / 3.0;
-                at[t].y = (a->y + b->y + c->y) / 3.0;
+                pl_vec2 ct = {(a->x + b->x + c->x) / 3.0, (a->y + b->y + c->y) / 3.0};
+                pl_vec2 px = pl_camera_to_px(&dl->camera, ct);
+                int ix = (int)floor(px.x / cell), iy = (int)floor(px.y / cell);
+                if (ix < 0 || iy < 0 || ix >= gx || iy >= gy) continue;
+                double *e = acc + 5u * ((size_t)iy * (size_t)gx + (size_t)ix);
+                e[0] += ct.x; e[1] += ct.y;
+                e[2] += s->fluid_velocity[t].x; e[3] += s->fluid_velocity[t].y;
+                e[4] += 1.0;
             }
-            pl_draw_arrows(dl, at, s->fluid_velocity, nt, vscale, pl_rgb(0.05, 0.12, 0.30), 1.1f, 3.0);
+            int n = 0;
+            for (size_t k = 0; k < ncell; k++) {
+                double *e = acc + 5u * k;
+                if (e[4] <= 0.0) continue;
+                at[n] = (pl_vec2){e[0] / e[4], e[1] / e[4]};
+                vv[n] = (pl_vec2){e[2] / e[4], e[3] / e[4]};
+                double v = hypot(vv[n].x, vv[n].y);
+                if (v > vcell) vcell = v;
+                n++;
+            }
+            /* automatic scale: the fastest cell arrow spans 0.9 cells */
+            if (!(opt->velocity_scale > 0.0) && vcell > 0.0)
+                vscale = 0.9 * cell / dl->camera.scale / vcell;
+            pl_draw_arrows(dl, at, vv, n, vscale, pl_rgb(0.05, 0.12, 0.30), 1.2f, 2.5);
+            free(acc);
             free(at);
+            free(vv);
         }
     }
     return vscale;

@@ -31,6 +31,8 @@ typedef struct pl_render_scene {
     int *fluid_tris;        int fluid_tri_count, fluid_tri_cap; ///< 3 node indices per triangle
     pl_vec2 *fluid_velocity;///< Darcy velocity per triangle, m/s
     int fluid_field;        ///< which node field fluid_values holds (pl_fluid_node_field)
+    double fluid_conductivity; ///< largest element conductivity, m/s (0 = unknown); Darcy
+                            ///< velocities below 1e-9 of it (gradients < 1e-9) are not drawn
 } pl_render_scene;
 
 void pl_render_scene_init(pl_render_scene *s);
@@ -110,7 +112,7 @@ void pl_draw_colorbar(pl_draw_list *dl, pl_px_rect r, pl_colormap map, double vm
 void pl_draw_material_legend(pl_draw_list *dl, pl_vec2 at, const char (*names)[48],
                              const pl_rgba *colors, int n, float fs);
 
-/// Base font size for an image: min(width, height) / 38, between 10 and 30 px.
+/// Base font size for an image: min(width, height) / 38, between 11 and 30 px.
 float pl_render_font_size(int width, int height);
 
 #ifdef __cplusplus

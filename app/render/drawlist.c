@@ -59,6 +59,7 @@ void pl_draw_list_clear(pl_draw_list *dl) {
     dl->prim_count = dl->point_count = dl->color_count = dl->text_size = 0;
     dl->failed = 0;
     dl->current_layer = 0;
+    dl->has_clip = 0;
 }
 
 void pl_draw_list_free(pl_draw_list *dl) {
@@ -211,6 +212,14 @@ void pl_dl_segments_begin(pl_draw_list *dl, pl_space sp, pl_rgba color, float wi
 
 void pl_dl_segment_add(pl_draw_list *dl, pl_vec2 a, pl_vec2 b) {
     if (dl->prim_count == 0 || dl->prims[dl->prim_count - 1].kind != PL_PRIM_SEGMENTS) return;
+    /* long batches are split: cairo strokes a batch as one path, and a path of thousands of
+     * crossing segments tessellates much slower than many short ones */
+    if (dl->prims[dl->prim_count - 1].count >= 2 * PL_SEGMENT_BATCH) {
+        pl_prim prev = dl->prims[dl->prim_count - 1];
+        pl_dl_segments_begin(dl, (pl_space)prev.space, prev.stroke, prev.width);
+        if (dl->prims[dl->prim_count - 1].kind != PL_PRIM_SEGMENTS) return;
+        dl->prims[dl->prim_count - 1].layer = prev.layer;
+    }
     if (grow(dl, (void **)&dl->points, &dl->point_cap, dl->point_count + 2, sizeof(pl_vec2))) return;
     pl_vec2 pts[2] = {a, b};
     add_points(dl, &dl->prims[dl->prim_count - 1], pts, 2);

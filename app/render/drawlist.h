@@ -88,6 +88,9 @@ typedef struct pl_draw_list {
     pl_rgba *colors;  int color_count, color_cap;
     char *text;       int text_size, text_cap;
     pl_camera camera; ///< camera used for PL_SPACE_WORLD primitives
+    pl_px_rect clip;  ///< world-space primitives are clipped to this pixel rectangle when
+                      ///< has_clip (the plot area, so a scene never runs over the labels)
+    int has_clip;
     pl_rgba background;
     int failed;       ///< set when an allocation failed; the list is then incomplete
     uint16_t current_layer; ///< tag given to appended primitives
@@ -115,6 +118,8 @@ void pl_dl_polygon(pl_draw_list *dl, pl_space sp, const pl_vec2 *p, int n, const
 void pl_dl_polyline(pl_draw_list *dl, pl_space sp, const pl_vec2 *p, int n, pl_rgba color,
                     float width);
 void pl_dl_line(pl_draw_list *dl, pl_space sp, pl_vec2 a, pl_vec2 b, pl_rgba color, float width);
+/// Segments per batch primitive; longer batches are split automatically.
+#define PL_SEGMENT_BATCH 64
 /// Starts a batch of independent segments sharing colour and width; add with pl_dl_segment_add.
 void pl_dl_segments_begin(pl_draw_list *dl, pl_space sp, pl_rgba color, float width);
 void pl_dl_segment_add(pl_draw_list *dl, pl_vec2 a, pl_vec2 b);
@@ -123,8 +128,8 @@ void pl_dl_triangles_begin(pl_draw_list *dl, pl_space sp);
 void pl_dl_triangle_add(pl_draw_list *dl, const pl_vec2 p[3], const pl_rgba c[3]);
 void pl_dl_arrow(pl_draw_list *dl, pl_space sp, pl_vec2 tail, pl_vec2 tip, pl_rgba color,
                  float shaft_width, float head_length);
-/// Text in DejaVu Sans. size in px; anchor from pl_text_anchor; halo (background outline of
-/// width ~size/5 in halo colour) when halo != NULL.
+/// Text in DejaVu Sans. size in px; anchor from pl_text_anchor; when halo != NULL the text
+/// sits on a box of the halo colour (labels on lines and fields).
 void pl_dl_text(pl_draw_list *dl, pl_space sp, pl_vec2 at, const char *s, float size,
                 int anchor, float angle, pl_rgba color, const pl_rgba *halo);
 

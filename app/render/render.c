@@ -100,6 +100,15 @@ int pl_render_parse_layers(const char *list, unsigned *layers, char *err, size_t
     return 0;
 }
 
+static pl_rgba material_fill(const pl_render_options *opt, int m) {
+    if (opt->material_color_count > 0) {
+        int n = opt->material_color_count > PL_RENDER_MAX_MATERIAL_COLORS
+                    ? PL_RENDER_MAX_MATERIAL_COLORS : opt->material_color_count;
+        return opt->material_colors[m % n];
+    }
+    return pl_material_palette(m);
+}
+
 /* Quantity used to colour bodies, with its colour map and display unit. */
 typedef struct quantity {
     int active;
@@ -191,17 +200,38 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     double top_h = (has_title || (L & PL_LAYER_TIME)) ? 2.0 * fs : 0.0;
     double bot_h = (L & PL_LAYER_SCALEBAR) ? 2.4 * fs : 0.0;
     double right_w = 0.0;
+    /* material legend: the materials of moving bodies, then one entry for fixed bodies and
+     * walls (drawn in the wall colour whatever their material) */
     int legend_n = 0;
-    pl_rgba legend_colors[PL_RENDER_MAX_MATERIAL_COLORS];
+    pl_rgba legend_colors[PL_RENDER_MAX_MATERIAL_COLORS + 1];
+    char legend_names[PL_RENDER_MAX_MATERIAL_COLORS + 1][48];
+    if ((L & PL_LAYER_COLORBAR) && !bar->active && (L & PL_LAYER_BODIES)) {
+        int any_fixed = 0;
+        for (int m = 0; m < s->material_count && legend_n < PL_RENDER_MAX_MATERIAL_COLORS; m++) {
+            int used = 0;
+            for (int i = 0; i < s->body_count && !used; i++)
+                used = s->bodies[i].material == m && s->bodies[i].motion == PL_MOTION_DYNAMIC &&
+                       s->bodies[i].shape != PL_SHAPE_SEGMENT;
+            if (!used) continue;
+            legend_colors[legend_n] = material_fill(opt, m);
+            snprintf(legend_names[legend_n], 48, "%s", s->material_names[m]);
+            legend_n++;
+        }
+        for (int i = 0; i < s->body_count && !any_fixed; i++)
+            any_fixed = s->bodies[i].motion != PL_MOTION_DYNAMIC || s->bodies[i].shape == PL_SHAPE_SEGMENT;
+        if (any_fixed) {
+            legend_colors[legend_n] = opt->wall_color;
+            snprintf(legend_names[legend_n], 48, "fixed, walls");
+            legend_n++;
+        }
+    }
     if (L & PL_LAYER_COLORBAR) {
         if (bar->active) {
             right_w = fmax(7.0 * fs, 0.52 * 0.9 * fs * (double)strlen(bar->label) + 1.6 * fs);
-        } else if (s->material_count > 0) {
-            legend_n = s->material_count < PL_RENDER_MAX_MATERIAL_COLORS ? s->material_count
-                                                                          : PL_RENDER_MAX_MATERIAL_COLORS;
+        } else if (legend_n > 0) {
             size_t longest = 8;
             for (int m = 0; m < legend_n; m++)
-                if (strlen(s->material_names[m]) > longest) longest = strlen(s->material_names[m]);
+                if (strlen(legend_names[m]) > longest) longest = strlen(legend_names[m]);
             right_w = 0.55 * 0.85 * fs * (double)longest + 3.0 * fs;
         }
     }
@@ -211,6 +241,8 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
         dl->camera = pl_camera_fit(s->lo, s->hi, W, H, area, opt->margin);
     else
         dl->camera = pl_camera_fit(opt->view_lo, opt->view_hi, W, H, area, 0.0);
+    dl->clip = area;
+    dl->has_clip = 1;
 
     /* Scene layers, back to front: fluid field and mesh, bodies, isolines and velocity
      * arrows, force chains, overlays. */
@@ -241,7 +273,13 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     }
     if (has_title) {
         dl->current_layer = 9;
-        pl_draw_title(dl, (pl_vec2){0.5 * W, 0.5 * top_h}, opt->title, fs);
+        /* centred, unless it would run into the time stamp: then just right of it
+         * (widths estimated at 0.56 em per character of DejaVu Sans) */
+        double title_w = 0.56 * 1.15 * fs * (double)strlen(opt->title);
+        double time_end = (L & PL_LAYER_TIME) ? 0.8 * fs + 0.56 * fs * 14.0 + 1.0 * fs : 0.0;
+        double cx = 0.5 * W;
+        if (cx - 0.5 * title_w < time_end) cx = time_end + 0.5 * title_w;
+        pl_draw_title(dl, (pl_vec2){cx, 0.5 * top_h}, opt->title, fs);
     }
     if (L & PL_LAYER_SCALEBAR) {
         dl->current_layer = 8;
@@ -262,17 +300,8 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
             pl_draw_colorbar(dl, r, bar->map, bar->vmin * bar->unit_factor,
                              bar->vmax * bar->unit_factor, bar->label, fs);
         } else if (legend_n > 0) {
-            for (int m = 0; m < legend_n; m++) {
-                if (opt->material_color_count > 0) {
-                    int n = opt->material_color_count > PL_RENDER_MAX_MATERIAL_COLORS
-                                ? PL_RENDER_MAX_MATERIAL_COLORS : opt->material_color_count;
-                    legend_colors[m] = opt->material_colors[m % n];
-                } else {
-                    legend_colors[m] = pl_material_palette(m);
-                }
-            }
             pl_draw_material_legend(dl, (pl_vec2){x0, area.y0 + 1.0 * fs},
-                                    (const char(*)[48])s->material_names, legend_colors, legend_n, fs);
+                                    (const char(*)[48])legend_names, legend_colors, legend_n, fs);
         }
     }
     if (dl->failed) {

@@ -19,7 +19,8 @@
 typedef struct win {
     SDL_Window *sdl;
     SDL_GLContext ctx;
-    pl_gl *gl;
+    pl_gl *gl;      /* the window's renderer (PORELAB_WINDOW_SAMPLES, default as headless) */
+    pl_gl *gl_shot; /* screenshots: the headless default, created on the first screenshot */
     pl_wsim sim;
     pl_draw_list scene_dl, frame_dl, hud, tmp;
     pl_render_scene rs;
@@ -167,6 +168,11 @@ static const char *coloring_name(int c)
     return c == PL_COLOR_BY_SPEED ? "speed" : c == PL_COLOR_BY_STRESS ? "stress" : "material";
 }
 
+static double measure(void *ud, const char *s, float size)
+{
+    return pl_gl_text_width((pl_gl *)ud, s, size);
+}
+
 static void build_hud(win *g)
 {
     pl_draw_list *h = &g->hud;
@@ -189,7 +195,7 @@ static void build_hud(win *g)
              coloring_name(g->sim.ropt.coloring));
     lines[n] = l[n]; n++;
     if (g->msg[0] && now_s() < g->msg_until) { snprintf(l[n], sizeof l[n], "%.190s", g->msg); lines[n] = l[n]; n++; }
-    pl_hud_panel(h, 2, 0.0, lines, n, fs, ink);
+    pl_hud_panel(h, 2, 0.0, lines, n, fs, ink, measure, g->gl);
 
     /* values under the cursor */
     n = 0;
@@ -226,7 +232,7 @@ static void build_hud(win *g)
             }
         }
     }
-    pl_hud_panel(h, 3, 2.0 * 1.35 * fs + 2.0 * fs, lines, n, fs, ink);
+    pl_hud_panel(h, 3, 2.0 * 1.35 * fs + 2.0 * fs, lines, n, fs, ink, measure, g->gl);
 
     /* parameters and errors */
     n = 0;
@@ -236,7 +242,7 @@ static void build_hud(win *g)
                  q->name, q->value, q->unit, q->min, q->max);
         lines[n] = l[n]; n++;
     }
-    if (n > 0) pl_hud_panel(h, 1, 0.0, lines, n, fs, ink);
+    if (n > 0) pl_hud_panel(h, 1, 2.2 * fs, lines, n, fs, ink, measure, g->gl);
     if (g->sim.error[0]) {
         /* wrap the message at ~90 characters */
         char buf[1024];
@@ -249,17 +255,21 @@ static void build_hud(win *g)
             snprintf(wrap[m], sizeof wrap[m], "%.90s", buf + off);
             el[m] = wrap[m];
         }
-        pl_hud_panel(h, 0, 0.0, el, m, fs, pl_rgb_hex(0xFF8080));
+        pl_hud_panel(h, 0, 0.0, el, m, fs, pl_rgb_hex(0xFF8080), measure, g->gl);
     }
     if (g->show_help)
-        pl_hud_panel(h, 0, g->sim.error[0] ? 8.0 * 1.35 * fs : 0.0, pl_hud_help, pl_hud_help_count, fs, ink);
+        pl_hud_panel(h, 0, g->sim.error[0] ? 8.0 * 1.35 * fs : 0.0, pl_hud_help, pl_hud_help_count, fs, ink, measure, g->gl);
 }
 
 static void screenshot(win *g)
 {
     char err[900], path[PATH_MAX + 64];
-    if (build_scene(g) != 0 || pl_gl_render(g->gl, &g->scene_dl, err, sizeof err) != 0 ||
-        pl_gl_read(g->gl, &g->img, err, sizeof err) != 0) {
+    /* a renderer with the headless settings, so the file equals `--renderer gl` whatever
+     * sample count the window itself uses */
+    if (!g->gl_shot) g->gl_shot = pl_gl_create(get_proc, 0, err, sizeof err);
+    if (!g->gl_shot || build_scene(g) != 0 ||
+        pl_gl_render(g->gl_shot, &g->scene_dl, err, sizeof err) != 0 ||
+        pl_gl_read(g->gl_shot, &g->img, err, sizeof err) != 0) {
         message(g, "screenshot failed", 0);
         return;
     }
@@ -273,8 +283,14 @@ static void screenshot(win *g)
         snprintf(g->sim.error, sizeof g->sim.error, "screenshot: %s", err);
         return;
     }
-    printf("screenshot: %s (t = %.9g s, step %lld)\n", path, pl_world_time(g->sim.w),
-           pl_wsim_steps(&g->sim));
+    const pl_camera *c = &g->scene_dl.camera;
+    printf("screenshot: %s (t = %.9g s, step %lld, state-hash %016llx)\n", path,
+           pl_world_time(g->sim.w), pl_wsim_steps(&g->sim),
+           (unsigned long long)pl_world_state_hash(g->sim.w));
+    /* the view, so that pixels can be mapped to the world: x_px = (x - cx) s + px, y_px =
+     * py - (y - cy) s */
+    printf("camera: scale %.9g center %.9g %.9g px_center %.9g %.9g\n", c->scale, c->center.x,
+           c->center.y, c->px_center.x, c->px_center.y);
     fflush(stdout);
     snprintf(g->msg, sizeof g->msg, "wrote %.200s", path);
     g->msg_until = now_s() + 2.5;
@@ -413,19 +429,31 @@ static void release_grab(win *g)
     g->grab = -1;
 }
 
+/* Mouse positions come in window points; the picture is in drawable pixels (they differ on
+ * high-DPI displays). */
+static void to_px(win *g, int x, int y, int *px, int *py)
+{
+    int ww, wh, dw, dh;
+    SDL_GetWindowSize(g->sdl, &ww, &wh);
+    SDL_GL_GetDrawableSize(g->sdl, &dw, &dh);
+    *px = ww > 0 ? (int)((long)x * dw / ww) : x;
+    *py = wh > 0 ? (int)((long)y * dh / wh) : y;
+}
+
 static void event(win *g, const SDL_Event *e)
 {
+    int x, y;
     switch (e->type) {
     case SDL_QUIT: g->quit = 1; break;
     case SDL_KEYDOWN: key(g, e->key.keysym.sym, e->key.keysym.mod); break;
     case SDL_MOUSEMOTION:
-        if (g->panning) pan_by(g, e->motion.x - g->mx, e->motion.y - g->my);
-        g->mx = e->motion.x;
-        g->my = e->motion.y;
+        to_px(g, e->motion.x, e->motion.y, &x, &y);
+        if (g->panning) pan_by(g, x - g->mx, y - g->my);
+        g->mx = x;
+        g->my = y;
         break;
     case SDL_MOUSEBUTTONDOWN:
-        g->mx = e->button.x;
-        g->my = e->button.y;
+        to_px(g, e->button.x, e->button.y, &g->mx, &g->my);
         g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
         if (e->button.button == SDL_BUTTON_LEFT) {
             if (g->hover >= 0 && g->rs.bodies[g->hover].motion == PL_MOTION_DYNAMIC &&
@@ -460,8 +488,8 @@ static void event(win *g, const SDL_Event *e)
     }
 }
 
-/* The spring of a grabbed grain: critically damped at 3 Hz, relative to the grain's mass,
- * towards the cursor. */
+/* The spring of a grabbed grain: critically damped at 3 Hz (softer when a drawn frame spans
+ * a long simulated time), relative to the grain's mass, towards the cursor. */
 static void spring(win *g)
 {
     if (g->grab < 0 || g->sim.stopped) return;
@@ -471,7 +499,10 @@ static void spring(win *g)
         return;
     }
     pl_vec2 t = pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my});
-    double om = 2.0 * M_PI * 3.0;
+    /* the force is updated once per drawn frame and held over its steps: keep omega times
+     * the frame's simulated duration below 0.5 so the pull cannot overshoot and grow */
+    double om = 2.0 * M_PI * 3.0, held = (double)g->speed * pl_world_dt(g->sim.w);
+    if (held > 0.0 && om * held > 0.5) om = 0.5 / held;
     pl_vec2 f = {b.mass * (om * om * (t.x - b.position.x) - 2.0 * om * b.velocity.x),
                  b.mass * (om * om * (t.y - b.position.y) - 2.0 * om * b.velocity.y)};
     pl_wsim_set_load(&g->sim, g->grab, f);
@@ -529,7 +560,8 @@ int pl_window_main(const pl_opts *o)
                               SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE);
     g->ctx = g->sdl ? SDL_GL_CreateContext(g->sdl) : NULL;
     char err[1024];
-    if (g->ctx) g->gl = pl_gl_create(get_proc, 0, err, sizeof err);
+    const char *ws = getenv("PORELAB_WINDOW_SAMPLES");
+    if (g->ctx) g->gl = pl_gl_create(get_proc, ws && atoi(ws) > 0 ? atoi(ws) : 0, err, sizeof err);
     else snprintf(err, sizeof err, "%s", SDL_GetError());
     if (!g->gl) {
         fprintf(stderr, "porelab: cannot start OpenGL in the window: %s\n", err);
@@ -591,6 +623,8 @@ int pl_window_main(const pl_opts *o)
         pl_draw_list_append(&g->frame_dl, &g->hud);
         g->frame_dl.camera = g->scene_dl.camera;
         g->frame_dl.background = g->scene_dl.background;
+        g->frame_dl.clip = g->scene_dl.clip;
+        g->frame_dl.has_clip = g->scene_dl.has_clip;
         if (pl_gl_render(g->gl, &g->frame_dl, err, sizeof err) != 0) {
             fprintf(stderr, "porelab: %s\n", err);
             break;
@@ -614,6 +648,7 @@ int pl_window_main(const pl_opts *o)
     pl_draw_list_free(&g->tmp);
     pl_image_free(&g->img);
     pl_gl_destroy(&g->gl);
+    pl_gl_destroy(&g->gl_shot);
     SDL_GL_DeleteContext(g->ctx);
     SDL_DestroyWindow(g->sdl);
     SDL_Quit();

@@ -1,5 +1,5 @@
 /* HUD panels: dark translucent boxes with light text, sized from the text advance widths
- * (DejaVu Sans averages about 0.5 em per character). */
+ * measured by the renderer's font. */
 #include "window_hud.h"
 
 #include <string.h>
@@ -18,13 +18,13 @@ const char *const pl_hud_help[] = {
 const int pl_hud_help_count = (int)(sizeof pl_hud_help / sizeof pl_hud_help[0]);
 
 void pl_hud_panel(pl_draw_list *dl, int corner, double shift, const char *const *lines, int n,
-                  float size, pl_rgba ink)
+                  float size, pl_rgba ink, pl_hud_measure measure, void *ud)
 {
     if (n <= 0) return;
     double W = dl->camera.width, H = dl->camera.height;
     double lh = 1.35 * size, pad = 0.5 * size, wmax = 0.0;
     for (int i = 0; i < n; i++) {
-        double w = 0.50 * size * (double)strlen(lines[i]);
+        double w = measure(ud, lines[i], size);
         if (w > wmax) wmax = w;
     }
     double bw = wmax + 2.0 * pad, bh = n * lh + 2.0 * pad;

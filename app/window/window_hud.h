@@ -7,8 +7,9 @@
 
 /* Appends lines of text in a translucent panel; corner 0 top-left, 1 top-right,
  * 2 bottom-left, 3 bottom-right; shift moves it away from its edge (px). */
+typedef double (*pl_hud_measure)(void *ud, const char *s, float size); /* text width, px */
 void pl_hud_panel(pl_draw_list *dl, int corner, double shift, const char *const *lines, int n,
-                  float size, pl_rgba ink);
+                  float size, pl_rgba ink, pl_hud_measure measure, void *ud);
 /* The key list shown by 'h'. */
 extern const char *const pl_hud_help[];
 extern const int pl_hud_help_count;

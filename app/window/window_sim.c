@@ -276,13 +276,15 @@ int pl_wsim_advance(pl_wsim *sim, long long n)
 {
     if (sim->stopped || !sim->w) return -1;
     long long target = pl_wsim_steps(sim) + n;
-    /* frame 0 (step 0) hook: as `porelab run` calls on_frame after drawing the first frame */
+    /* `porelab run` draws frame k and then calls on_frame(k) before stepping on; so here
+     * the hooks of the frames at or before the current step run just before stepping
+     * further, and the picture at a frame step is the state run draws there. */
     while (1) {
         if (apply_pending(sim) != 0) return -1;
         long long now = pl_wsim_steps(sim);
+        if (now >= target) break;
         while (pl_run_plan_frame_step(&sim->plan, sim->next_k) <= now)
             if (hook_frame(sim) != 0) return -1;
-        if (now >= target) break;
         long long stop = target;
         long long f = pl_run_plan_frame_step(&sim->plan, sim->next_k);
         if (f < stop) stop = f;

@@ -147,11 +147,14 @@ int main(int argc, char **argv) {
     build_scene(&s);
     printf("1280x720, %d bodies, %d contacts, %d fluid triangles, mean of %d frames\n",
            s.body_count, s.contact_count, s.fluid_tri_count, frames);
-    char csvbuf[4096];
+    char csvbuf[8192];
     FILE *csv = fmemopen(csvbuf, sizeof csvbuf, "w");
     fprintf(csv, "config,primitives,build_ms,raster_ms,encode_ms,total_ms\n");
     bench("bodies", &s, PL_LAYER_BODIES, frames, outdir, csv);
     bench("bodies+forces+time", &s, PL_LAYERS_DEFAULT, frames, outdir, csv);
+    bench("forces", &s, PL_LAYER_FORCES, frames, outdir, csv);
+    bench("tangential", &s, PL_LAYER_TANGENTIAL, frames, outdir, csv);
+    bench("mesh", &s, PL_LAYER_MESH, frames, outdir, csv);
     bench("pressure", &s, PL_LAYER_PRESSURE, frames, outdir, csv);
     bench("isolines+velocity", &s, PL_LAYER_ISOLINES | PL_LAYER_VELOCITY, frames, outdir, csv);
     bench("all layers", &s, 0xFFFu, frames, outdir, csv);

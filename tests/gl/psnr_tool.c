@@ -1,7 +1,9 @@
-/* gl_psnr A.png B.png [MIN_DB]: prints the PSNR of two PNGs (RGB channels); exits 1 when it
- * is below MIN_DB (or the sizes differ), 2 on a read error. "inf" for identical images. */
+/* gl_psnr A.png B.png [MIN_DB [X Y W H]]: prints the PSNR of two PNGs (RGB channels), of the
+ * whole images or of the rectangle X, Y, W, H (pixels, clipped); exits 1 when it is below
+ * MIN_DB (or the sizes differ), 2 on a read error. "inf" for identical images. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "backend_cairo.h"
 #include "gl_psnr.h"
@@ -17,6 +19,26 @@ int main(int argc, char **argv)
     if (pl_png_read(argv[1], &a, err, sizeof err) || pl_png_read(argv[2], &b, err, sizeof err)) {
         fprintf(stderr, "gl_psnr: %s\n", err);
         return 2;
+    }
+    if (argc > 7 && a.width == b.width && a.height == b.height) { /* crop both */
+        int x0 = atoi(argv[4]), y0 = atoi(argv[5]), w = atoi(argv[6]), h = atoi(argv[7]);
+        if (x0 < 0) { w += x0; x0 = 0; }
+        if (y0 < 0) { h += y0; y0 = 0; }
+        if (x0 + w > a.width) w = a.width - x0;
+        if (y0 + h > a.height) h = a.height - y0;
+        if (w <= 0 || h <= 0) {
+            fprintf(stderr, "gl_psnr: the rectangle is outside the images\n");
+            return 2;
+        }
+        pl_image *im[2] = {&a, &b};
+        for (int k = 0; k < 2; k++) {
+            for (int y = 0; y < h; y++)
+                memmove(im[k]->rgba + (size_t)y * (size_t)w * 4,
+                        im[k]->rgba + ((size_t)(y0 + y) * (size_t)im[k]->width + (size_t)x0) * 4,
+                        (size_t)w * 4);
+            im[k]->width = w;
+            im[k]->height = h;
+        }
     }
     double p = pl_psnr(&a, &b);
     if (p < 0) {

@@ -7,10 +7,12 @@
 #  3. mouse wheel zoom: the window shows the zoomed screenshot, which differs from the
 #     unzoomed render; 'z' restores the fitted view;
 #  4. a scene parameter (up arrow on the selected parameter) changes what happens;
-#  5. the scene file is watched: a syntax error is reported and the previous scene stays,
+#  5. dragging a grain on the spring changes what happens; a right click fixes it in place;
+#  6. the scene file is watched: a syntax error is reported and the previous scene stays,
 #     fixing the file reloads it.
 #   test_window_xvfb.sh PORELAB GL_PSNR GL_XCAPTURE SOURCE_DIR OUT_DIR
 set -u
+unset PORELAB_GL_SAMPLES PORELAB_WINDOW_SAMPLES # the goldens and thresholds are for the defaults
 P=$1; PSNR=$2; CAP=$3; SRC=$4; OUT=$5
 rm -rf "$OUT"; mkdir -p "$OUT"
 XPID=""; VPID=""
@@ -91,15 +93,54 @@ if p7=$("$PSNR" "$OUT/v/screenshot_005.png" "$OUT/headless_6.png" 40); then
 fi
 echo "wood density 600 -> 3000 kg/m3: differs from the unchanged scene ($p7 dB)"
 
-# 5. the file watch: a syntax error keeps the scene, a fix reloads it
+# 5. grab the wood block (a spring to the cursor) and pull it down into the water while
+#    stepping; then fix it (right click) where it is and step on: it stays put.
+cam=$(grep '^camera:' "$OUT/view.log" | tail -1)
+set -- $cam
+S=$3; CX=$5; CY=$6; PX=$8; PY=$9
+topx() { echo "$1 $2" | awk -v s="$S" -v cx="$CX" -v cy="$CY" -v px="$PX" -v py="$PY" \
+  '{ printf "%d %d", (($1 - cx) * s + px), (py - ($2 - cy) * s) }'; }
+key R
+sleep 0.3
+key s s s s s s s s s s s s s s s s s s s s s s s s s s s s s s p
+wait_shots 7
+xy=$(topx 0.08 0.28); set -- $xy; X0=$1; Y0=$2
+xy=$(topx 0.08 0.12); set -- $xy; X1=$1; Y1=$2
+xdotool mousemove --window "$W" "$X0" "$Y0" mousedown 1
+sleep 0.2
+xdotool mousemove --window "$W" "$X1" "$Y1"
+sleep 0.3
+key s s s s s s s s s s s s s s s
+xdotool mouseup 1
+key p
+wait_shots 8
+T=$(shot_time 8)
+"$P" still "$OUT/scene.lua" --at "$T" --size 640x480 -o "$OUT/headless_8.png" --renderer gl \
+  --out "$OUT/h" -q || fail "headless still 8"
+if p9=$("$PSNR" "$OUT/v/screenshot_007.png" "$OUT/headless_8.png" 35); then
+  fail "dragging the wood block changed nothing ($p9 dB)"
+fi
+xdotool mousemove --window "$W" "$X1" "$Y1" click 3
+key s s s s s s s s s s p
+wait_shots 9
+key s s s s s s s s s s p
+wait_shots 10
+# around the block (its half size is 0.035 x 0.02 m; 0.05 m box)
+xy=$(topx 0.03 0.17); set -- $xy; BX=$1; BY=$2
+BW=$(echo "$S" | awk '{ printf "%d", 0.10 * $1 }'); BH=$(echo "$S" | awk '{ printf "%d", 0.10 * $1 }')
+p10=$("$PSNR" "$OUT/v/screenshot_008.png" "$OUT/v/screenshot_009.png" 40 $BX $BY $BW $BH) || \
+  fail "the fixed block moved ($p10 dB in the box $BX $BY $BW $BH)"
+echo "grab: the dragged block differs from the untouched run ($p9 dB); fixed by right click, it stays ($p10 dB)"
+
+# 6. the file watch: a syntax error keeps the scene, a fix reloads it
 sleep 1.1 # a new modification time
 echo "this is not lua (" >>"$OUT/scene.lua"
 i=0; while ! grep -q '^reload: failed' "$OUT/view.log" && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 grep -q '^reload: failed' "$OUT/view.log" || fail "the syntax error was not reported"
 grep '^reload: failed' "$OUT/view.log" | grep -q "scene.lua:" || fail "the error does not name the file"
 key p
-wait_shots 7
-p8=$("$PSNR" "$OUT/v/screenshot_006.png" "$OUT/v/screenshot_005.png" 200) || fail "the previous scene did not stay ($p8 dB)"
+wait_shots 11
+p8=$("$PSNR" "$OUT/v/screenshot_010.png" "$OUT/v/screenshot_009.png" 200) || fail "the previous scene did not stay ($p8 dB)"
 sleep 1.1
 cp "$SRC/scenes/lab/buoyancy.lua" "$OUT/scene.lua"
 i=0; while ! grep -q '^reload: ok' "$OUT/view.log" && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done

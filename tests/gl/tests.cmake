@@ -3,6 +3,7 @@
 #   test_gl_render   image-diff vs tests/golden/gl/, GL vs cairo PSNR, rasterization units
 #   gl_cli           porelab still/run --renderer gl against the cairo renderer
 #   gl_window_xvfb   the SDL2 window under Xvfb driven by xdotool (needs xvfb, xdotool, SDL2)
+#   gl_window_scenes every scene of scenes/ opens live; its screenshot = the headless render
 if(TARGET porelab_gl)
   set(PL_GL_OUT ${CMAKE_CURRENT_BINARY_DIR}/gl-out)
   file(MAKE_DIRECTORY ${PL_GL_OUT})
@@ -32,6 +33,9 @@ if(TARGET porelab_gl)
       $<TARGET_FILE:porelab> $<TARGET_FILE:gl_psnr> $<TARGET_FILE:gl_xcapture>
       ${CMAKE_SOURCE_DIR} ${PL_GL_OUT}/window)
     set_tests_properties(gl_window_xvfb PROPERTIES LABELS gl TIMEOUT 240)
+    add_test(NAME gl_window_scenes COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/gl/test_window_scenes.sh
+      $<TARGET_FILE:porelab> $<TARGET_FILE:gl_psnr> ${CMAKE_SOURCE_DIR} ${PL_GL_OUT}/scenes)
+    set_tests_properties(gl_window_scenes PROPERTIES LABELS gl TIMEOUT 400)
   else()
     message(STATUS "gl_window_xvfb test skipped (needs the window, libx11-dev, xvfb, xdotool)")
   endif()

@@ -68,14 +68,13 @@ static pl_world *pile(double spin) {
         int n = 5 - k;
         double x0 = -0.4 + k * 0.1;
         for (int i = 0; i < n; i++)
-            add_disc(w, (k % 2) ? glass : sand, x0 + 0.2 * i, y, r,
-                     spin * ((i + k) % 2 ? 1.0 : -1.0));
+            add_disc(w, (k % 2) ? glass : sand, x0 + 0.2 * i, y, r, spin);
         double d = 2.0 * r - 0.0005 * (4 - k); /* overlap to the next row: 2, 1.5, 1, 0.5 mm */
         y += sqrt(d * d - r * r);
     }
-    /* a square on top of the apex disc (0.5 mm overlap) */
+    /* a square on top of the right disc of the top row (0.5 mm overlap) */
     double top = y - sqrt(pow(2.0 * r - 0.0005, 2) - r * r) + r - 0.0005;
-    pl_vec2 sq[4] = {{-0.08, top}, {0.08, top}, {0.08, top + 0.16}, {-0.08, top + 0.16}};
+    pl_vec2 sq[4] = {{0.02, top}, {0.18, top}, {0.18, top + 0.16}, {0.02, top + 0.16}};
     add_polygon(w, granite, sq, 4);
     /* a hexagon resting on the right end of the bottom row */
     pl_vec2 hex[6];

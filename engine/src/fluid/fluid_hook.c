@@ -27,7 +27,7 @@ pl_status pl__fluid_step(pl_world *w, double dt) {
         f->time_since = 0;
     } else {
         f->steps_since++;
-        f->time_since += dt;
+        if (f->steps_since > 0) f->time_since += dt; /* 0: the step a query's static solve stood for */
         if (f->steps_since >= f->par.solve_every) {
             st = pl__fluid_update(w, f->time_since, 0);
             if (st != PL_OK) return st;

@@ -390,7 +390,10 @@ static struct pl_fluid *built(pl_world *w) {
     if (!f->initialised && pl__fluid_flag(w, "FLUIDS_ON", 0) != 0 && pl__fluid_flag(w, "FIRST_STEP_STATIC", 0) != 0) {
         if (pl__fluid_update(w, 0, 1) != PL_OK) return f; /* message in last_error; field stays */
         f->initialised = 1;
-        f->steps_since = 0;
+        /* the stepping hook would have made this static solve at the first step and counted
+           from there: start one step behind so that the later updates fall on the same steps
+           whether or not a query (e.g. a frame at t = 0) came first (docs/soil.md §7) */
+        f->steps_since = -1;
         f->time_since = 0;
     }
     return f;
