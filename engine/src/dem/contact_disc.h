@@ -3,7 +3,9 @@
  *   normal:  F_n = k_N delta - c_N v_n   (linear spring on the overlap delta, dashpot)
  *   shear:   S <- S - k_S v_t dt  (incremental spring, history kept while the contact lasts)
  *            D_S = -c_S v_t;  Coulomb (eq. 2.17): |S| <= mu k_N delta + c; when exceeded S is
- *            set to the limit with its sign and the shear dashpot is off (sliding).
+ *            set to the limit with its sign and the shear dashpot is off (sliding). With shear
+ *            damping the seed's limit is on the sum, |S + D_S| <= S_max (text below eq. 2.19):
+ *            when the spring is below the limit but the sum is not, D_S is cut to the remainder.
  * The contact lasts while the outlines overlap; the spring-plus-dashpot normal force may turn
  * slightly tensile just before separation, as in the seed (this keeps the analytic
  * restitution e = exp(-pi zeta / sqrt(1 - zeta^2))).
@@ -62,6 +64,10 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
         const double lim = smax > 0 ? smax : 0;
         fs = fs > 0 ? lim : -lim;
         fd = 0;
+    } else if (fabs(fs + fd) > smax) {
+        /* seed 003, text below eq. 2.19: with shear damping the limit is |S + D_S| <= S_max;
+           the spring keeps its (sub-limit) history and the dashpot gives what is left */
+        fd = (fs + fd > 0 ? smax : -smax) - fs;
     }
     const double ft = fs + fd;
     const double es = 0.5 * fs * fs * pp->inv_ks, en = 0.5 * fn_el * delta;

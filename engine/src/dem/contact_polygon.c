@@ -330,6 +330,8 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
         w->e_friction += lim * slip;
         fs = fs > 0 ? lim : -lim;
         fd = 0;
+    } else if (fabs(fs + fd) > smax) {
+        fd = (fs + fd > 0 ? smax : -smax) - fs; /* |S + D_S| <= S_max, as for discs */
     }
     const double ft = fs + fd;
 
