@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "render/drawlist.h"
 #include "gl_cli.h"
+#include "run_plan.h"
 
 #include <limits.h>
 #include <math.h>
@@ -19,12 +20,16 @@ static const pl_opt_spec still_specs[] = {
     {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
     {"--quiet", "-q", NULL, "do not print what was written"},
     {"--renderer", NULL, "NAME", "cairo (default) or gl (OpenGL through OSMesa; PNG only)"},
+    {"--fps", NULL, "F", "frame rate of the run whose on_frame hooks are replayed (as for run)"},
+    {"--every", NULL, "N", "or: steps between those frames (as for run)"},
     {NULL, NULL, NULL, NULL}};
 
 static const pl_command_help still_help = {
     "still", "SCENE.lua --at T -o FILE.png|.svg|.pdf [options]",
     "Builds the scene, steps it to time T and draws one figure with the scene's render\n"
-    "options. The format follows the file extension; all three come from the same drawing.",
+    "options. The format follows the file extension; all three come from the same drawing.\n"
+    "The scene's on_frame hook is called at the frame times of `porelab run` (scene's run\n"
+    "table, or --fps/--every), so the figure equals the run's frame at T.",
     still_specs};
 
 static int has_extension(const char *path)
@@ -32,6 +37,41 @@ static int has_extension(const char *path)
     const char *dot = strrchr(path, '.');
     return dot && (strcmp(dot, ".png") == 0 || strcmp(dot, ".svg") == 0 ||
                    strcmp(dot, ".pdf") == 0);
+}
+
+/* Steps to time `at` exactly as `porelab run` would: the scene's on_frame hook is called at
+   every frame time of the run (from the scene's run table or PRINT_INT) before `at`, so that
+   a scene that acts from its hooks (opening a gate, switching the fluid on) is in the same
+   state as the run's frame at that time. */
+static pl_status step_like_run(const pl_opts *o, pl_scene *s, pl_world *w, const pl_run_plan *p,
+                               double at)
+{
+    const long long start = (long long)pl_world_step_count(w);
+    const long long target = at > p->t_start ? (long long)ceil((at - p->t_start) / p->dt - 1e-9) : 0;
+    long long k = 0, next = 0, index = 0;
+    for (;;) {
+        long long done = (long long)pl_world_step_count(w) - start;
+        /* the run draws frame k first and then calls on_frame(k); the figure at `target`
+           is that drawing, so hooks of frames at or after `target` are not called */
+        while (next < target && done >= next) {
+            if (pl_scene_call_hook(s, "on_frame", index++) != 0) {
+                pl_cli_print_scene_error(o, s);
+                fprintf(stderr, "porelab: the scene's on_frame hook raised an error (above)\n");
+                return PL_ERR_STATE;
+            }
+            while (pl_run_plan_frame_step(p, k) <= done) k++;
+            next = pl_run_plan_frame_step(p, k);
+        }
+        if (done >= target) return PL_OK;
+        long long n = (next > done && next < target ? next : target) - done;
+        if (n > INT_MAX) n = INT_MAX;
+        pl_status st = pl_world_step(w, (int)n);
+        if (st != PL_OK) {
+            fprintf(stderr, "porelab: run stopped at t = %.6g s before reaching %g s: %s\n",
+                    pl_world_time(w), at, pl_world_last_error(w));
+            return st;
+        }
+    }
 }
 
 int pl_cmd_still(int argc, char **argv)
@@ -67,19 +107,18 @@ int pl_cmd_still(int argc, char **argv)
     } else if (pl_cli_render_options(&o, s, w, &ropt) == 0) {
         double t = pl_world_time(w);
         if (at < 0) at = t;
-        double dt = pl_world_dt(w);
         pl_status st = PL_OK;
+        pl_run_plan plan;
         if (at < t - 1e-12) {
             fprintf(stderr, "porelab still: --at %g is before the scene's current time %g s\n",
                     at, t);
             rc = PL_EXIT_USAGE;
-        } else if (at > t) {
-            double n = ceil((at - t) / dt - 1e-9);
-            for (double done = 0; st == PL_OK && done < n; done += INT_MAX)
-                st = pl_world_step(w, (int)(n - done > INT_MAX ? INT_MAX : n - done));
-            if (st != PL_OK)
-                fprintf(stderr, "porelab: run stopped at t = %.6g s before reaching %g s: %s\n",
-                        pl_world_time(w), at, pl_world_last_error(w));
+        } else if ((rc = pl_run_plan_make(&o, s, w, &plan)) != 0) {
+            rc = rc == PL_EXIT_USAGE ? PL_EXIT_USAGE : PL_EXIT_FAIL;
+            st = PL_ERR_STATE;
+        } else {
+            rc = PL_EXIT_FAIL;
+            st = step_like_run(&o, s, w, &plan, at);
         }
         char err[1024];
         pl_draw_list overlay;

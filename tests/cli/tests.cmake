@@ -169,3 +169,10 @@ pl_cli_test(bad_shake_frequency RC 1 ARGS run ${PL_BAD}/bad_shake.lua --quiet
 
 # Packing helpers: fill to a porosity and a count, size distributions, servo compression.
 pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --out ${PL_CLI_OUT}/packing)
+
+# A still replays the run's on_frame hooks, so it equals the run's frame at the same time.
+add_test(NAME cli_still_matches_run COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
+         -DIMGDIFF=$<TARGET_FILE:imgdiff>
+         -DSCENE=${CMAKE_SOURCE_DIR}/scenes/demo.lua -DOUT=${PL_CLI_OUT}/still_matches_run
+         -P ${PL_CLI_DIR}/still_matches_run.cmake)
+set_tests_properties(cli_still_matches_run PROPERTIES LABELS cli TIMEOUT 120)
