@@ -176,3 +176,6 @@ add_test(NAME cli_still_matches_run COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE
          -DSCENE=${CMAKE_SOURCE_DIR}/scenes/demo.lua -DOUT=${PL_CLI_OUT}/still_matches_run
          -P ${PL_CLI_DIR}/still_matches_run.cmake)
 set_tests_properties(cli_still_matches_run PROPERTIES LABELS cli TIMEOUT 120)
+add_test(NAME cli_flags_documented COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
+         -DDOC=${CMAKE_SOURCE_DIR}/docs/scene-reference.md -P ${PL_CLI_DIR}/flags_doc.cmake)
+set_tests_properties(cli_flags_documented PROPERTIES LABELS cli TIMEOUT 60)

@@ -1,0 +1,22 @@
+# The flag table in docs/scene-reference.md must be the one `porelab flags --markdown` prints
+# (regenerate the docs after adding or changing a flag).
+#   cmake -DEXE=porelab -DDOC=docs/scene-reference.md -P flags_doc.cmake
+execute_process(COMMAND ${EXE} flags --markdown OUTPUT_VARIABLE table RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "porelab flags --markdown failed (${rc})")
+endif()
+file(READ ${DOC} doc)
+string(REPLACE "\n" ";" rows "${table}")
+set(missing 0)
+foreach(row IN LISTS rows)
+  if(row MATCHES "^\\| `")
+    string(FIND "${doc}" "${row}" at)
+    if(at EQUAL -1)
+      message("not in ${DOC}: ${row}")
+      math(EXPR missing "${missing} + 1")
+    endif()
+  endif()
+endforeach()
+if(missing GREATER 0)
+  message(FATAL_ERROR "${missing} flag rows differ: paste `porelab flags --markdown` into ${DOC}")
+endif()
