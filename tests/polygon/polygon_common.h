@@ -3,6 +3,7 @@
 #define PL_TEST_POLYGON_COMMON_H
 #include "porelab/shapes.h"
 #include "porelab/world.h"
+#include "physics/common.h"
 #include <math.h>
 #include <stdio.h>
 
@@ -38,30 +39,14 @@ static inline int poly_add_box(pl_world *w, int mat, double cx, double cy, doubl
     return poly_add(w, mat, v, 4, motion);
 }
 
-static inline int poly_add_disc(pl_world *w, int mat, double x, double y, double r) {
-    pl_body_def b = pl_default_body_def();
-    b.shape = PL_SHAPE_DISC;
-    b.material = mat;
-    b.position = (pl_vec2){x, y};
-    b.radius = r;
-    return pl_world_add_body(w, &b);
-}
+/* Discs, walls and body queries: the physics tests' helpers (tests/physics/common.h). */
+static inline int poly_add_disc(pl_world *w, int mat, double x, double y, double r) { return add_disc(w, mat, x, y, r); }
 
 static inline int poly_add_wall(pl_world *w, int mat, double x0, double y0, double x1, double y1) {
-    pl_body_def b = pl_default_body_def();
-    b.shape = PL_SHAPE_SEGMENT;
-    b.motion = PL_MOTION_FIXED;
-    b.material = mat;
-    b.a = (pl_vec2){x0, y0};
-    b.b = (pl_vec2){x1, y1};
-    return pl_world_add_body(w, &b);
+    return add_wall(w, mat, x0, y0, x1, y1);
 }
 
-static inline pl_body_info poly_body(const pl_world *w, int i) {
-    pl_body_info b;
-    pl_world_body_info(w, i, &b);
-    return b;
-}
+static inline pl_body_info poly_body(const pl_world *w, int i) { return body(w, i); }
 
 /* Contact between bodies i and j after the last step (0 when none). */
 static inline int poly_contact(const pl_world *w, int i, int j, pl_contact_info *out) {
