@@ -27,11 +27,13 @@ static int b_shake(lua_State *L)
     return 0;
 }
 
-/* body:servo{direction = {dx, dy}, force = F, gain = G, vmax = V}: the body moves along the
-   direction it pushes in so that the contact force it receives holds F (N per m of depth). */
+/* body:servo{direction = {dx, dy}, force = F, gain = G, vmax = V [, drive = {vx, vy}, fluid = b]}:
+   the body moves along the direction it pushes in so that the contact force it receives holds F
+   (N per m of depth); drive adds a velocity across that direction, fluid = true counts the pore
+   fluid's force too. */
 static int b_servo(lua_State *L)
 {
-    static const char *const fields[] = {"direction", "force", "gain", "vmax", NULL};
+    static const char *const fields[] = {"direction", "force", "gain", "vmax", "drive", "fluid", NULL};
     const char *fn = "servo";
     pl_world *w;
     const int i = pl_lua_check_body(L, 1, &w);
@@ -47,6 +49,18 @@ static int b_servo(lua_State *L)
     const double v = pl_lua_field_number(L, 2, fn, "vmax", 0.05);
     PL_LUA_CHECK(L, v > 0 && isfinite(v), fn, "vmax", "> 0 m/s", v);
     pl_lua_check_status(L, w, pl_world_set_servo(w, i, d, F, g, v), fn);
+    /* extras (engine/src/dem/servo_drive.c): drive = {vx, vy} across the servo direction,
+       fluid = true to hold the total (contact + pore fluid) force */
+    const pl_vec2 drive = pl_lua_field_vec2(L, 2, fn, "drive", (pl_vec2){0, 0});
+    int with_fluid = 0;
+    if (pl_lua_has_field(L, 2, "fluid")) {
+        lua_getfield(L, 2, "fluid");
+        if (!lua_isboolean(L, -1)) pl_lua_error(L, "servo: fluid must be a boolean (got %s)", luaL_typename(L, -1));
+        with_fluid = lua_toboolean(L, -1);
+        lua_pop(L, 1);
+    }
+    if (drive.x != 0 || drive.y != 0 || with_fluid)
+        pl_lua_check_status(L, w, pl_world_set_servo_drive(w, i, drive, with_fluid), fn);
     return 0;
 }
 

@@ -8,5 +8,26 @@ if(TARGET porelab)
   add_test(NAME soil_liquefaction COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/soil/liquefaction.lua -q
            --fps 30 --size 120x42 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/liquefaction)
   set_tests_properties(soil_liquefaction PROPERTIES LABELS "soil;long" TIMEOUT 600)
+  # Terzaghi with grains: the consolidation scene run whole (four columns, ~3 min); its on_finish
+  # asserts the columns' mean degree of consolidation within 5% of U(T_v) at T_v = 0.1, 0.2,
+  # 0.5 (docs/soil.md §5.2). 120 frames/s: the frames are the scene's samples of settlement.
+  add_test(NAME soil_consolidation COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/soil/consolidation.lua -q
+           --fps 120 --size 100x48 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/consolidation)
+  set_tests_properties(soil_consolidation PROPERTIES LABELS "soil;long" TIMEOUT 900)
 endif()
 # Benchmark (not a test): tests/bench/bench_soil.sh [build/app/porelab] (docs/soil.md §6).
+pl_add_c_test(test_servo_drive SOURCES ${PL_TEST_DIR}/soil/test_servo_drive.c LABEL soil TIMEOUT 60)
+# Constant-volume simple shear (docs/soil.md §5.4): the undrained pore-pressure rise equals the
+# drop of sigma'_v of the dry constant-volume sample. Short (cyclic row, 2 cycles, ~10 s), the
+# same with the coupling off (must fail the criterion), and the whole scene (both rows, ~40 s).
+if(TARGET porelab)
+  add_test(NAME soil_simple_shear COMMAND porelab run ${CMAKE_SOURCE_DIR}/tests/soil/simple_shear_short.lua --trust -q
+           --size 160x92 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/simple_shear_short)
+  set_tests_properties(soil_simple_shear PROPERTIES LABELS "soil" TIMEOUT 120)
+  add_test(NAME soil_simple_shear_uncoupled COMMAND porelab run ${CMAKE_SOURCE_DIR}/tests/soil/simple_shear_uncoupled.lua
+           --trust -q --size 160x92 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/simple_shear_uncoupled)
+  set_tests_properties(soil_simple_shear_uncoupled PROPERTIES LABELS "soil" TIMEOUT 120)
+  add_test(NAME soil_simple_shear_full COMMAND porelab run ${CMAKE_SOURCE_DIR}/tests/soil/simple_shear_check.lua --trust -q
+           --size 300x172 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/simple_shear_full)
+  set_tests_properties(soil_simple_shear_full PROPERTIES LABELS "soil;long" TIMEOUT 300)
+endif()

@@ -168,6 +168,12 @@ pl_status pl_world_set_sinusoid(pl_world *w, int body, pl_vec2 amplitude, double
 /// contact force it receives holds F_target (N, > 0). gain and vmax in m/s.
 pl_status pl_world_set_servo(pl_world *w, int body, pl_vec2 direction, double target_force, double gain,
                              double vmax);
+/// Extras of a servo body (call after pl_world_set_servo, which resets them): a drive velocity
+/// (m/s) added to the servo's own motion, its component along the servo direction removed (e.g.
+/// the horizontal shear of a servo-controlled top wall, seed 003 Fig. 5.19); and with_fluid = 1
+/// to count the pore fluid's force on the body (pl_world_fluid_body_force) in the measured force,
+/// so that the servo holds the total (contacts + water) force. Used by scenes/soil/simple_shear.lua.
+pl_status pl_world_set_servo_drive(pl_world *w, int body, pl_vec2 drive, int with_fluid);
 /// Hinged side wall of a simple-shear box (seed 003 §5.4-5.6): the body turns about the fixed
 /// pivot so that it stays at the angle atan(dx / height) from its initial direction, where dx is
 /// the horizontal displacement of the body `follow` (the top wall, moving under its own law)

@@ -35,12 +35,9 @@ void pl__apply_motion_laws(pl_world *w, double t, double dt) {
             break;
         }
         case PL_LAW_SERVO: {
-            /* err = (F_A - F_C) / F_A, v = G err limited to v_max, along the push direction */
-            const double fc = -(w->force[i].x * m->servo_dir.x + w->force[i].y * m->servo_dir.y);
-            const double err = (m->servo_target - fc) / m->servo_target;
-            double v = m->servo_gain * err;
-            if (fabs(v) > m->servo_vmax) v = m->servo_vmax * sgn(v);
-            w->vel[i] = (pl_vec2){v * m->servo_dir.x, v * m->servo_dir.y};
+            /* err = (F_A - F_C) / F_A, v = G err limited to v_max, along the push direction
+               (plus an optional drive across it and the fluid force: servo_drive.c) */
+            w->vel[i] = pl__servo_velocity(w, i);
             w->omega[i] = 0;
             break;
         }

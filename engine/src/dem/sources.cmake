@@ -6,6 +6,7 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/contact_polygon.c
   src/dem/contact_dispatch.c
   src/dem/integrate.c
+  src/dem/servo_drive.c
   src/dem/timestep.c
   src/dem/guards.c
   src/dem/flags.c

@@ -67,6 +67,7 @@ typedef struct pl_motion {
     pl_vec2 amplitude; double frequency; /* sinusoid: displacement amplitude (m), Hz */
     double t_start, t_stop;
     pl_vec2 servo_dir; double servo_target; double servo_gain; double servo_vmax;
+    pl_vec2 servo_drive; int servo_fluid;   /* servo extras (servo_drive.c): drive velocity, fluid force counted */
     pl_vec2 pivot, rel0; double angle0; int follow; double follow_x0, height; /* hinge */
 } pl_motion;
 
@@ -203,6 +204,9 @@ double pl__gravitational_energy(const pl_world *w);
 void pl__flags_init(pl_world *w);
 /* Marks a recognised flag as built (called by modules such as the fluid when they attach). */
 void pl__flags_mark_built(const char *name);
+
+/* Velocity of a servo-controlled body for this step (servo_drive.c). */
+pl_vec2 pl__servo_velocity(pl_world *w, int i);
 
 /* Fluid hooks (implemented in engine/src/fluid; see fluid_hook.h). */
 #endif
