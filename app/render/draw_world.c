@@ -202,15 +202,19 @@ void pl_draw_bodies(pl_draw_list *dl, const pl_render_scene *s, const pl_render_
             int detailed = r_px >= 3.0; /* outlines and marks only when they can be seen */
             pl_style st = detailed ? pl_style_fill_stroke(fill, edge, ow) : pl_style_fill(fill);
             pl_vec2 dir = {cos(b->angle), sin(b->angle)};
+            /* rotation marks on moving bodies, and on prescribed bodies that turn or have
+             * turned (a drum); a prescribed box that never turns is a wall */
+            int marked = !kinematic ||
+                         (b->motion == PL_MOTION_PRESCRIBED && (b->omega != 0.0 || b->angle != 0.0));
             if (b->shape == PL_SHAPE_DISC) {
                 pl_dl_circle(dl, PL_SPACE_WORLD, b->position, b->radius, &st);
-                if (detailed && (!kinematic || b->motion == PL_MOTION_PRESCRIBED)) {
+                if (detailed && marked) {
                     pl_vec2 tip = {b->position.x + b->radius * dir.x, b->position.y + b->radius * dir.y};
                     pl_dl_line(dl, PL_SPACE_WORLD, b->position, tip, mark, ow);
                 }
             } else if (nv >= 3) {
                 pl_dl_polygon(dl, PL_SPACE_WORLD, v, nv, &st);
-                if (detailed && (!kinematic || b->motion == PL_MOTION_PRESCRIBED)) {
+                if (detailed && marked) {
                     double len = ray_to_boundary(b->position, dir, v, nv);
                     pl_vec2 tip = {b->position.x + len * dir.x, b->position.y + len * dir.y};
                     pl_dl_line(dl, PL_SPACE_WORLD, b->position, tip, mark, ow);

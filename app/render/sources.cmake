@@ -9,6 +9,8 @@ list(APPEND PL_RENDER_SOURCES
   render/colormap.c
   render/isolines.c
   render/backend_cairo.c
+  render/raster_gouraud.c
+  render/raster_aa.c
   render/png_io.c
   render/draw_world.c
   render/draw_annot.c

@@ -11,8 +11,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <math.h>
+
 #include "harness.h"
 #include "backend_cairo.h"
+#include "draw_world.h"
 #include "image_compare.h"
 #include "render_scenes.h"
 
@@ -127,6 +130,123 @@ static int test_deterministic_bytes(void) {
     return 0;
 }
 
+/* A dense picture of small primitives (the kind the backend rasterizes itself: discs and
+ * hexagons of a few pixels with outlines and marks, force segments, tangential arrows, a
+ * Gouraud field with mesh and colour bar), 48 x 24 bodies at 640 x 400. */
+static void dense_scene(pl_render_scene *s) {
+    enum { NX = 48, NY = 24 };
+    const double r = 0.5;
+    for (int j = 0; j < NY; j++)
+        for (int i = 0; i < NX; i++) {
+            pl_body_info b;
+            memset(&b, 0, sizeof b);
+            int poly = (i * 7 + j * 3) % 5 == 0;
+            b.shape = poly ? PL_SHAPE_POLYGON : PL_SHAPE_DISC;
+            b.material = (i / 6 + j / 6) % 3;
+            b.position = (pl_vec2){0.99 * i + r * (j % 2), 0.99 * 0.866 * j};
+            b.radius = r * (0.85 + 0.15 * sin(i * 0.37 + j));
+            b.area = 3.14159 * b.radius * b.radius;
+            b.angle = 0.1 * i + 0.2 * j;
+            pl_vec2 v[6];
+            int nv = 0;
+            if (poly) {
+                for (int k = 0; k < 6; k++)
+                    v[k] = (pl_vec2){b.position.x + b.radius * cos(b.angle + k * 1.0471975512),
+                                     b.position.y + b.radius * sin(b.angle + k * 1.0471975512)};
+                nv = b.vertex_count = 6;
+            }
+            pl_render_scene_add_body(s, &b, v, nv);
+        }
+    for (int j = 0; j < NY; j++)
+        for (int i = 0; i < NX; i++) {
+            int a = j * NX + i, nb[2] = {i + 1 < NX ? a + 1 : -1, j + 1 < NY ? a + NX : -1};
+            for (int k = 0; k < 2; k++) {
+                if (nb[k] < 0) continue;
+                pl_contact_info c;
+                memset(&c, 0, sizeof c);
+                c.a = a;
+                c.b = nb[k];
+                pl_vec2 pa = s->bodies[c.a].position, pb = s->bodies[c.b].position;
+                c.point = (pl_vec2){0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y)};
+                double d = hypot(pb.x - pa.x, pb.y - pa.y);
+                c.normal = (pl_vec2){(pb.x - pa.x) / d, (pb.y - pa.y) / d};
+                c.fn = 1000.0 * (1.0 + sin(0.13 * i + 0.29 * j + k));
+                c.ft = 200.0 * sin(0.7 * i + k);
+                pl_render_scene_add_contact(s, &c);
+            }
+        }
+    s->lo = (pl_vec2){-1.0, -1.0};
+    s->hi = (pl_vec2){NX + 0.5, NY * 0.866 + 0.5};
+    enum { MX = 24, MY = 12 };
+    pl_vec2 nodes[(MX + 1) * (MY + 1)];
+    double val[(MX + 1) * (MY + 1)];
+    int tris[2 * MX * MY * 3];
+    pl_vec2 vel[2 * MX * MY];
+    for (int j = 0; j <= MY; j++)
+        for (int i = 0; i <= MX; i++) {
+            int n = j * (MX + 1) + i;
+            nodes[n] = (pl_vec2){s->hi.x * i / MX, s->hi.y * j / MY};
+            val[n] = 9810.0 * (s->hi.y - nodes[n].y) + 3000.0 * sin(0.3 * i) * cos(0.4 * j);
+        }
+    int t = 0;
+    for (int j = 0; j < MY; j++)
+        for (int i = 0; i < MX; i++) {
+            int a = j * (MX + 1) + i, b = a + 1, c = a + MX + 1, d = c + 1;
+            int q[6] = {a, b, d, a, d, c};
+            memcpy(tris + 3 * t, q, sizeof q);
+            vel[t] = vel[t + 1] = (pl_vec2){0, 0};
+            t += 2;
+        }
+    pl_render_scene_set_fluid(s, nodes, val, (MX + 1) * (MY + 1), tris, vel, t, 2);
+}
+
+/* The backend's own rasterizers (small bodies, segments, arrows, Gouraud fields on image
+ * surfaces) must give cairo's picture within the golden tolerance. */
+static int test_own_rasterizers_match_cairo(void) {
+    pl_render_scene s;
+    pl_render_scene_init(&s);
+    dense_scene(&s);
+    pl_render_options o = pl_default_render_options();
+    o.width = 640;
+    o.height = 400;
+    o.layers = PL_LAYER_BODIES | PL_LAYER_FORCES | PL_LAYER_TANGENTIAL | PL_LAYER_PRESSURE |
+               PL_LAYER_MESH | PL_LAYER_COLORBAR;
+    pl_draw_list dl;
+    pl_draw_list_init(&dl);
+    char err[512];
+    pl_image own = {0, 0, NULL}, ref = {0, 0, NULL};
+    ENSURE(pl_render_build_scene(&dl, &s, &o, err, sizeof err) == 0);
+    ENSURE(pl_cairo_rasterize(&dl, &own, err, sizeof err) == 0);
+    setenv("PORELAB_CAIRO_ONLY", "1", 1);
+    int rc = pl_cairo_rasterize(&dl, &ref, err, sizeof err);
+    unsetenv("PORELAB_CAIRO_ONLY");
+    ENSURE(rc == 0);
+    pl_compare_tolerance tol = pl_default_compare_tolerance();
+    pl_image diff = {0, 0, NULL};
+    pl_compare_result res = pl_image_compare(&ref, &own, &tol, &diff);
+    fprintf(stderr, "  own rasterizers against cairo: max channel diff %d, %ld of %ld pixels "
+                    "(%.3f %%) differ, mean abs diff %.4f\n",
+            res.max_channel_diff, res.differing, res.total, 100.0 * res.fraction,
+            res.mean_abs_diff);
+    char path[1024];
+    snprintf(path, sizeof path, "%s/dense-own.png", PL_RENDER_OUT_DIR);
+    pl_png_write(path, &own, 1, 0, err, sizeof err);
+    snprintf(path, sizeof path, "%s/dense-cairo.png", PL_RENDER_OUT_DIR);
+    pl_png_write(path, &ref, 1, 0, err, sizeof err);
+    if (!res.match) {
+        snprintf(path, sizeof path, "%s/dense.diff.png", PL_RENDER_OUT_DIR);
+        pl_png_write(path, &diff, 1, 0, err, sizeof err);
+    }
+    ENSURE(res.match);
+    ENSURE(res.mean_abs_diff > 0.0); /* the own rasterizers did draw something */
+    pl_image_free(&own);
+    pl_image_free(&ref);
+    pl_image_free(&diff);
+    pl_draw_list_free(&dl);
+    pl_render_scene_free(&s);
+    return 0;
+}
+
 int main(int argc, char **argv) {
     if (argc == 3 && strcmp(argv[1], "--update") == 0) {
         int rc = 0;
@@ -141,5 +261,6 @@ int main(int argc, char **argv) {
     RUN(test_goldens_match);
     RUN(test_changes_detected);
     RUN(test_deterministic_bytes);
+    RUN(test_own_rasterizers_match_cairo);
     return pl_test_report();
 }

@@ -26,3 +26,8 @@ add_executable(bench_render bench/bench_render.c render/render_scenes.c)
 target_include_directories(bench_render PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/render)
 target_link_libraries(bench_render PRIVATE porelab_render)
 target_compile_definitions(bench_render PRIVATE ${_pl_render_defs})
+
+# Seed 000 Figs. 4-10 to 4-12 (pressure wave, FE against erfc) as charts; run by
+# tools/figures.sh (not a test).
+add_executable(seed_wave_figures render/seed_wave_figures.c)
+target_link_libraries(seed_wave_figures PRIVATE porelab_render)

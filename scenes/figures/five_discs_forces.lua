@@ -1,0 +1,77 @@
+-- Seed 003 (Tan 1990) Fig. 2.13(a)-style diagram: the contact forces of the five settled discs
+-- of scenes/five_discs.lua (same world, repeated because a sandboxed scene loads files from
+-- its own folder only) at the end of the 5 s run: force chains between the centres (width
+-- proportional to the normal force, 200 kN at full width) and, at each contact, the computed
+-- normal force beside the rigid-disc value of Table 2.2 in parentheses, kN.
+--   porelab still scenes/figures/five_discs_forces.lua --at 5 -o five.png   (tools/figures.sh)
+local w = porelab.world {
+  dt = 1e-3,
+  flags = { GRAVITY_Y = -10, GLOBAL_DAMPING = 4.5e5, TIMESTEPS = 5000, PRINT_INT = 100 },
+}
+local rock = w:material { name = "rock", density = 2400, kn = 1e7, ks = 0, friction = 0,
+                          cn = 1e5, cs = 0 }
+local dy = math.sqrt(1.75)
+w:wall { from = { -2.5, 0 }, to = { 2.5, 0 }, material = rock }      -- wall 1 (floor)
+w:wall { from = { -2.5, 6 }, to = { -2.5, 0 }, material = rock }     -- wall 2 (left)
+w:wall { from = { 2.5, 0 }, to = { 2.5, 6 }, material = rock }       -- wall 3 (right)
+local discs = {
+  w:disc { center = { -1.5, 1 }, radius = 1, material = rock },            -- disc 1
+  w:disc { center = { 1.5, 1 }, radius = 1, material = rock },             -- disc 2
+  w:disc { center = { 0, 1 + dy }, radius = 1, material = rock },          -- disc 3
+  w:disc { center = { -1.5, 1 + 2 * dy }, radius = 1, material = rock },   -- disc 4
+  w:disc { center = { 1.5, 1 + 2 * dy }, radius = 1, material = rock },    -- disc 5
+}
+
+-- Table 2.2, rigid discs in the initial geometry, N
+local theory = { ["1-w1"] = 188495.6, ["1-w2"] = 128247.7, ["2-w1"] = 188495.6,
+                 ["2-w3"] = 128247.7, ["1-3"] = 170996.9, ["2-3"] = 170996.9,
+                 ["3-4"] = 113997.9, ["3-5"] = 113997.9, ["4-w2"] = 85498.4,
+                 ["5-w3"] = 85498.4 }
+
+local function name(i)
+  for k, d in ipairs(discs) do if d:index() == i then return tostring(k), k end end
+  return "w" .. tostring(i), 100 + i -- walls are bodies 1..3
+end
+
+local function key(c)
+  local a, ka = name(c.a)
+  local b, kb = name(c.b)
+  if ka > kb then a, b = b, a end
+  return a .. "-" .. b
+end
+
+return {
+  world = w,
+  render = {
+    size = { 760, 820 },
+    camera = { -3.2, -0.9, 3.2, 6.2 },
+    force_scale = 2e5,
+    force_max_width = 16,
+    force_threshold = 0,
+    layers = "bodies,forces,overlay,title,time",
+    title = "Five settled discs: contact forces (kN)",
+    colors = { rock = "#d9cbb0" },
+    overlay = function(world)
+      local items = {
+        { text = "wall 1", at = { 0, -0.35 }, anchor = "center", size = 15 },
+        { text = "wall 2", at = { -2.65, 5.6 }, anchor = "right", size = 15 },
+        { text = "wall 3", at = { 2.65, 5.6 }, anchor = "left", size = 15 },
+        { text = "computed (rigid discs, Tan 1990 Table 2.2)", at = { 0, 5.75 },
+          anchor = "center", size = 15 },
+      }
+      for k, d in ipairs(discs) do
+        local x, y = d:position()
+        items[#items + 1] = { text = tostring(k), at = { x, y + 0.45 }, anchor = "center",
+                              size = 22 }
+      end
+      for _, c in ipairs(world:contacts()) do
+        local ref = theory[key(c)]
+        local label = string.format("%.1f", c.fn / 1000)
+        if ref then label = label .. string.format(" (%.1f)", ref / 1000) end
+        items[#items + 1] = { text = label, at = { c.point[1] or c.point.x, c.point[2] or c.point.y },
+                              anchor = "center", size = 15, color = "#7a1010" }
+      end
+      return items
+    end,
+  },
+}
