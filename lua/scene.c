@@ -8,6 +8,7 @@
 #include "wrap.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -109,7 +110,79 @@ pl_scene *pl_scene_create(const pl_scene_options *opt)
 }
 
 static const char *const result_fields[] = {"world", "render", "run", "on_frame",
-                                            "on_finish", NULL};
+                                            "on_finish", "params", NULL};
+
+static const char *const param_fields[] = {"name", "unit", "value", "min", "max", "step",
+                                           "set", NULL};
+
+/* Validates the parameter list at index t (a list of {name, value, min, max, step, unit,
+ * set}) and copies it into out (when not NULL). Raises Lua errors naming the entry and the
+ * field; returns the count. */
+static int check_params(lua_State *L, int t, pl_scene_param *out)
+{
+    t = lua_absindex(L, t);
+    if (!lua_istable(L, t))
+        return luaL_error(L, "params must be a list of parameter tables {name = ..., value = ..., "
+                             "min = ..., max = ..., set = function(world, value) ... end} (got %s)",
+                          luaL_typename(L, t));
+    lua_Integer n = luaL_len(L, t);
+    if (n > PL_SCENE_MAX_PARAMS)
+        return luaL_error(L, "params: at most %d parameters (got %d)", PL_SCENE_MAX_PARAMS, (int)n);
+    for (lua_Integer i = 1; i <= n; i++) {
+        char what[32];
+        snprintf(what, sizeof what, "params[%d]", (int)i);
+        lua_geti(L, t, i);
+        int e = lua_gettop(L);
+        if (!lua_istable(L, e))
+            return luaL_error(L, "%s must be a table {name = ..., value = ..., min = ..., max = ..., "
+                                 "set = ...} (got %s)", what, luaL_typename(L, e));
+        pl_lua_check_fields(L, e, what, param_fields);
+        pl_scene_param p;
+        memset(&p, 0, sizeof p);
+        if (lua_getfield(L, e, "name") != LUA_TSTRING)
+            return luaL_error(L, "%s: name must be a string (got %s)", what, luaL_typename(L, -1));
+        snprintf(p.name, sizeof p.name, "%s", lua_tostring(L, -1));
+        lua_pop(L, 1);
+        int ut = lua_getfield(L, e, "unit");
+        if (ut != LUA_TNIL && ut != LUA_TSTRING)
+            return luaL_error(L, "%s (%s): unit must be a string (got %s)", what, p.name,
+                              luaL_typename(L, -1));
+        snprintf(p.unit, sizeof p.unit, "%s", ut == LUA_TSTRING ? lua_tostring(L, -1) : "");
+        lua_pop(L, 1);
+        const char *num[4] = {"value", "min", "max", "step"};
+        double *dst[4] = {&p.value, &p.min, &p.max, &p.step};
+        int has_step = 0;
+        for (int k = 0; k < 4; k++) {
+            int ty = lua_getfield(L, e, num[k]);
+            if (k == 3) has_step = ty != LUA_TNIL;
+            if (k == 3 && ty == LUA_TNIL) {
+                *dst[k] = 0.0;
+            } else if (ty != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1))) {
+                return luaL_error(L, "%s (%s): %s must be a finite number (got %s)", what, p.name,
+                                  num[k], ty == LUA_TNUMBER ? "a non-finite number" : luaL_typename(L, -1));
+            } else {
+                *dst[k] = lua_tonumber(L, -1);
+            }
+            lua_pop(L, 1);
+        }
+        if (!(p.max > p.min))
+            return luaL_error(L, "%s (%s): max must be > min (got min %f, max %f)", what, p.name,
+                              p.min, p.max);
+        if (p.value < p.min || p.value > p.max)
+            return luaL_error(L, "%s (%s): value must be in [min, max] = [%f, %f] (got %f)", what,
+                              p.name, p.min, p.max, p.value);
+        if (has_step && !(p.step > 0.0 && p.step <= p.max - p.min))
+            return luaL_error(L, "%s (%s): step must be in (0, max - min] = (0, %f] (got %f)", what,
+                              p.name, p.max - p.min, p.step);
+        if (!has_step) p.step = (p.max - p.min) / 20.0;
+        if (lua_getfield(L, e, "set") != LUA_TFUNCTION)
+            return luaL_error(L, "%s (%s): set must be a function(world, value) (got %s)", what,
+                              p.name, luaL_typename(L, -1));
+        lua_pop(L, 2);
+        if (out) out[i - 1] = p;
+    }
+    return (int)n;
+}
 
 /* Checks the scene's return value (at index 2; index 1 is the scene) and stores it. */
 static int check_result(lua_State *L)
@@ -129,6 +202,9 @@ static int check_result(lua_State *L)
     if (lua_getfield(L, 2, "world") == LUA_TNIL || !luaL_testudata(L, -1, PL_LUA_WORLD_MT))
         return luaL_error(L, "scene result: world must be the world built by porelab.world "
                              "(got %s)", luaL_typename(L, -1));
+    lua_getfield(L, 2, "params");
+    if (!lua_isnil(L, -1)) check_params(L, -1, NULL);
+    lua_pop(L, 1);
     s->world_ref = luaL_ref(L, LUA_REGISTRYINDEX);
     lua_pushvalue(L, 2);
     s->result_ref = luaL_ref(L, LUA_REGISTRYINDEX);
@@ -236,6 +312,60 @@ int pl_scene_run_settings(pl_scene *s, pl_scene_run *out)
 {
     memset(out, 0, sizeof *out);
     return pl_scene_read_field(s, "run", read_run, out);
+}
+
+/* Pushes the parameter list: result.params, else the global PARAMS (nil when neither). */
+static void push_params(pl_scene *s)
+{
+    if (pl_scene_push_result_field(s, "params") == LUA_TNIL) {
+        lua_pop(s->L, 1);
+        lua_getglobal(s->L, "PARAMS");
+    }
+}
+
+typedef struct params_ud {
+    pl_scene_param *out;
+    int n;
+} params_ud;
+
+static int read_params(lua_State *L)
+{
+    params_ud *ud = lua_touserdata(L, 1);
+    ud->n = lua_isnil(L, 2) ? 0 : check_params(L, 2, ud->out);
+    return 0;
+}
+
+int pl_scene_params(pl_scene *s, pl_scene_param out[PL_SCENE_MAX_PARAMS])
+{
+    params_ud ud = {out, 0};
+    lua_pushcfunction(s->L, read_params);
+    lua_pushlightuserdata(s->L, &ud);
+    push_params(s);
+    if (protected_call(s, 2, 0) != 0) return -1;
+    return ud.n;
+}
+
+int pl_scene_set_param(pl_scene *s, int i, double value)
+{
+    lua_State *L = s->L;
+    int top = lua_gettop(L);
+    push_params(s);
+    if (!lua_istable(L, -1) || lua_geti(L, -1, i + 1) != LUA_TTABLE ||
+        lua_getfield(L, -1, "set") != LUA_TFUNCTION || s->world_ref == LUA_NOREF) {
+        pl_scene_set_error(s, "%s: params[%d]: no set function", s->ctx.scene_path, i + 1);
+        lua_settop(L, top);
+        return -1;
+    }
+    lua_rawgeti(L, LUA_REGISTRYINDEX, s->world_ref);
+    lua_pushnumber(L, value);
+    int rc = protected_call(s, 2, 0);
+    if (rc != 0) {
+        char msg[sizeof s->error];
+        snprintf(msg, sizeof msg, "%s", s->error);
+        pl_scene_set_error(s, "params[%d].set: %s", i + 1, msg);
+    }
+    lua_settop(L, top);
+    return rc;
 }
 
 int pl_scene_flag_was_set(pl_scene *s, const char *name, double *value)

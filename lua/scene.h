@@ -57,6 +57,24 @@ int pl_scene_push_result_field(pl_scene *s, const char *field);
 /// and the field (possibly nil) at index 2 and may raise Lua errors (the lua/ helpers in
 /// lua_util.h). Returns 0, or -1 with "scene.lua: <message>" in pl_scene_error.
 int pl_scene_read_field(pl_scene *s, const char *field, lua_CFunction reader, void *ud);
+/// A parameter the scene lets the user change while it runs (the live window): the result
+/// table's `params` list, or else the global PARAMS, each entry { name = "wood block",
+/// unit = "kg/m3", value = 600, min = 100, max = 3000, step = 100,
+/// set = function(world, value) ... end }. value, min, max and set are required, min < max,
+/// value in [min, max], step in (0, max - min] (default (max - min) / 20).
+#define PL_SCENE_MAX_PARAMS 16
+typedef struct pl_scene_param {
+    char name[48];
+    char unit[24];
+    double value, min, max, step;
+} pl_scene_param;
+/// Reads and checks the parameter list (result.params, else the global PARAMS; the loader
+/// already checked result.params). Returns the count (0 when the scene declares none), or
+/// -1 with "scene.lua: params[2] (name): max must be > min (...)" in pl_scene_error.
+int pl_scene_params(pl_scene *s, pl_scene_param out[PL_SCENE_MAX_PARAMS]);
+/// Calls params[i + 1].set(world, value) (between steps). Returns 0, or -1 with a message.
+int pl_scene_set_param(pl_scene *s, int i, double value);
+
 /// The scene path as given (for messages).
 const char *pl_scene_path(const pl_scene *s);
 /// Sets the error message (used by the host when it rejects a result field).

@@ -1,5 +1,6 @@
-/* OpenGL backend: draw list -> vertices (CPU) -> one indexed draw into a multisampled
- * offscreen framebuffer -> resolve. See backend_gl.h for how each primitive is drawn. */
+/* OpenGL backend: draw list -> vertices (CPU) -> a few indexed draws (one per run of
+ * primitives sharing a program, clip and depth state) into an offscreen framebuffer ->
+ * resolve. See backend_gl.h for how each primitive is drawn. */
 #include "backend_gl.h"
 
 #include <math.h>
@@ -9,20 +10,34 @@
 
 #include "gl_text.h"
 
-enum { MODE_SOLID = 0, MODE_GLYPH = 1, MODE_CIRCLE = 2, MODE_CAPSULE = 3 };
+/* Programs: PROG_SHAPE draws every untextured primitive with one branch-free distance
+ * formula (see fs_shape); PROG_GLYPH samples the glyph atlas; PROG_SOLID only passes the
+ * vertex colour on (field meshes, which cover the plot area, and fills without an
+ * antialiased edge: the cheapest possible pixels). */
+enum { PROG_SHAPE = 0, PROG_GLYPH = 1, PROG_SOLID = 2, PROG_COUNT = 3 };
+
+/* Half-width of the "band" that makes the shape shader paint solid geometry (coverage 1)
+ * and one-sided edge ramps of antialiased convex fills (see add_fill_aa). */
+#define HUGE_HW 16384.0f
 
 typedef struct gv {
     float x, y, z;     /* pixels (y down), depth in NDC */
-    uint8_t c0[4];     /* fill / primary colour, straight alpha */
-    uint8_t c1[4];     /* circle stroke colour */
-    float p[4];        /* per-mode parameters (see the fragment shader) */
-    float mode;
+    uint8_t c0[4];     /* circle fill colour, straight alpha (0 for everything else) */
+    uint8_t c1[4];     /* stroke / solid colour; glyph colour */
+    float p[4];        /* shape: u, v, L or -r, half-width; glyph: atlas u, v, size */
 } gv;
+
+/* A run of indices drawn with one program, clip and depth state. */
+typedef struct gl_batch {
+    long first, count;
+    uint8_t prog, clip, depth;
+} gl_batch;
 
 struct pl_gl {
     pl_gl_funcs f;
-    GLuint prog, vbo, ibo, tex, vao;
-    GLint u_size, u_tex, u_clip, u_fsize;
+    GLuint prog[PROG_COUNT], vbo, ibo, tex, vao;
+    GLint u_size[PROG_COUNT], u_clip[PROG_COUNT], u_tex, u_core;
+    long vbo_bytes, ibo_bytes; /* allocated sizes: reused while large enough */
     GLuint fbo_ms, rb_color_ms, rb_depth_ms, fbo_res, rb_color_res;
     int fb_w, fb_h, samples, max_size;
     int width, height; /* size of the last render */
@@ -30,9 +45,10 @@ struct pl_gl {
     /* frame geometry, reused between frames */
     gv *v; long nv, cv;
     uint32_t *ix; long ni, ci;
+    gl_batch *bt; int nb, cb;
     int failed;
     float z;
-    float clip_mode; /* 8 when the current primitive is clipped to dl->clip, else 0 */
+    int clip; /* 1 when the current primitive is clipped to dl->clip */
     char renderer[128], version[128];
 };
 
@@ -44,71 +60,103 @@ static const char *vs_src =
     "attribute vec4 a_c0;\n"
     "attribute vec4 a_c1;\n"
     "attribute vec4 a_p;\n"
-    "attribute float a_mode;\n"
     "uniform vec2 u_size;\n"
     "varying vec4 v_c0;\n"
     "varying vec4 v_c1;\n"
     "varying vec4 v_p;\n"
-    "varying float v_mode;\n"
     "void main() {\n"
     "  gl_Position = vec4(2.0 * a_pos.x / u_size.x - 1.0, 1.0 - 2.0 * a_pos.y / u_size.y,\n"
     "                     a_pos.z, 1.0);\n"
-    "  v_c0 = a_c0; v_c1 = a_c1; v_p = a_p; v_mode = a_mode;\n"
+    "  v_c0 = a_c0; v_c1 = a_c1; v_p = a_p;\n"
     "}\n";
+
+/* The glyph program needs no fill colour. */
+static const char *vs_glyph_src =
+    "#version 120\n"
+    "attribute vec3 a_pos;\n"
+    "attribute vec4 a_c1;\n"
+    "attribute vec4 a_p;\n"
+    "uniform vec2 u_size;\n"
+    "varying vec4 v_c1;\n"
+    "varying vec4 v_p;\n"
+    "void main() {\n"
+    "  gl_Position = vec4(2.0 * a_pos.x / u_size.x - 1.0, 1.0 - 2.0 * a_pos.y / u_size.y,\n"
+    "                     a_pos.z, 1.0);\n"
+    "  v_c1 = a_c1; v_p = a_p;\n"
+    "}\n";
+
+/* The plot-area clip: a pixel is kept when its centre lies in u_clip = [x0, x1) x [y0, y1)
+ * in GL window coordinates (y up), as cairo clips at pixel centres; unclipped batches get
+ * a rectangle larger than the frame. (A scissor box would be cheaper, but llvmpipe applies
+ * it per sample when multisampling, which leaves half-covered pixels at the clip edge.) */
+#define CLIP_TEST                                                                            \
+    "  if (gl_FragCoord.x < u_clip.x || gl_FragCoord.x >= u_clip.z ||\n"                      \
+    "      gl_FragCoord.y < u_clip.y || gl_FragCoord.y >= u_clip.w) discard;\n"
 
 /* Output is premultiplied (blend ONE, ONE_MINUS_SRC_ALPHA). Coverage of a band of
  * half-width h at distance d from its centre line, box-filtered over one pixel:
- * clamp(h - d + 0.5) - clamp(-h - d + 0.5); exact for straight edges. */
-static const char *fs_src =
+ * clamp(h - d + 0.5) - clamp(-h - d + 0.5); exact for straight edges.
+ *
+ * One formula for every untextured primitive, without branches (llvmpipe runs every branch
+ * of a fragment shader on all pixels of a block, so an "uber-shader" costs the sum of its
+ * modes): d = distance from (u, v) to the segment [0, L] x {0}; a disc of radius r filled
+ * with c0 (coverage clamp(r - d + 0.5)), under a band of half-width hw around the circle
+ * of radius r in c1.
+ * - circle:  (u, v) relative to the centre, L = 0 (p.z = -r), hw = half the stroke width;
+ * - capsule: (u, v) along/across the segment, p.z = L, r = 0: the band is the capsule;
+ *   p.w < 0 = butt ends (arrow shafts): band across times the clamped ends;
+ * - solid geometry: (0, 0), L = r = 0, hw = HUGE_HW: coverage 1, colour c1 per vertex;
+ * - edge ramp of an antialiased convex fill: v = HUGE_HW - s (s = signed distance inside
+ *   the edge, interpolated exactly since it is affine), hw = HUGE_HW: coverage
+ *   clamp(s + 0.5). */
+static const char *fs_shape_src =
     "#version 120\n"
-    "uniform sampler2D u_tex;\n"
-    "uniform vec4 u_clip;\n"   /* x0, y0, x1, y1 in pixels, y down */
-    "uniform vec2 u_fsize;\n"
+    "uniform float u_core;\n"
+    "uniform vec4 u_clip;\n"
     "varying vec4 v_c0;\n"
     "varying vec4 v_c1;\n"
     "varying vec4 v_p;\n"
-    "varying float v_mode;\n"
     "float band(float h, float d) {\n"
     "  return clamp(h - d + 0.5, 0.0, 1.0) - clamp(-h - d + 0.5, 0.0, 1.0);\n"
     "}\n"
     "void main() {\n"
-    "  vec4 c;\n"
-    "  float mode = v_mode;\n"
-    "  if (mode > 7.5) {\n" /* world-space primitive clipped to the plot area */
-    "    vec2 q = vec2(gl_FragCoord.x, u_fsize.y - gl_FragCoord.y);\n"
-    "    if (q.x < u_clip.x || q.x >= u_clip.z || q.y < u_clip.y || q.y >= u_clip.w) discard;\n"
-    "    mode -= 8.0;\n"
-    "  }\n"
-    "  if (mode < 0.5) {\n"
-    "    c = vec4(v_c0.rgb * v_c0.a, v_c0.a);\n"
-    "  } else if (mode < 1.5) {\n"
-    /* unrotated glyphs (p.z = atlas size) sample exact texel centres, so the picture does
-     * not depend on where the glyph sits in the atlas; rotated ones (p.z = 0) filter */
-    "    vec2 uv = v_p.z > 0.0 ? (floor(v_p.xy * v_p.z) + 0.5) / v_p.z : v_p.xy;\n"
-    "    float a = texture2D(u_tex, uv).r * v_c0.a;\n"
-    "    c = vec4(v_c0.rgb * a, a);\n"
-    "  } else if (mode < 2.5) {\n"
-    "    float d = length(v_p.xy);\n"
-    "    float r = v_p.z, hw = 0.5 * v_p.w;\n"
-    "    float cf = clamp(r - d + 0.5, 0.0, 1.0);\n"
-    "    if (r < 0.5) cf *= 2.0 * r;\n" /* sub-pixel discs: keep their area */
-    "    float cs = hw > 0.0 ? band(hw, abs(d - r)) : 0.0;\n"
-    "    float fa = v_c0.a * cf, sa = v_c1.a * cs;\n"
-    "    c = vec4(v_c1.rgb * sa + v_c0.rgb * fa * (1.0 - sa), sa + fa * (1.0 - sa));\n"
-    "  } else {\n"
-    "    float u = v_p.x, L = v_p.z, hw = abs(v_p.w);\n"
-    "    float cv;\n"
-    "    if (v_p.w >= 0.0) {\n"
-    "      float d = length(vec2(u - clamp(u, 0.0, L), v_p.y));\n"
-    "      cv = band(hw, d);\n"
-    "    } else {\n"
-    "      cv = band(hw, abs(v_p.y)) * clamp(min(u, L - u) + 0.5, 0.0, 1.0);\n"
-    "    }\n"
-    "    float a = v_c0.a * cv;\n"
-    "    c = vec4(v_c0.rgb * a, a);\n"
-    "  }\n"
+    CLIP_TEST
+    "  float u = v_p.x, hw = abs(v_p.w);\n"
+    "  float L = max(v_p.z, 0.0), r = max(-v_p.z, 0.0);\n"
+    "  float d = length(vec2(u - clamp(u, 0.0, L), v_p.y));\n"
+    "  float cf = clamp(r - d + 0.5, 0.0, 1.0) * min(2.0 * r, 1.0);\n" /* sub-pixel discs keep their area */
+    "  float cs = v_p.w >= 0.0 ? band(hw, abs(d - r))\n"
+    "                          : band(hw, abs(v_p.y)) * clamp(min(u, L - u) + 0.5, 0.0, 1.0);\n"
+    "  if (cs < u_core) discard;\n"
+    "  float fa = v_c0.a * cf, sa = v_c1.a * cs;\n"
+    "  vec4 c = vec4(v_c1.rgb * sa + v_c0.rgb * fa * (1.0 - sa), sa + fa * (1.0 - sa));\n"
     "  if (c.a <= 0.0) discard;\n"
     "  gl_FragColor = c;\n"
+    "}\n";
+
+static const char *fs_solid_src =
+    "#version 120\n"
+    "uniform vec4 u_clip;\n"
+    "varying vec4 v_c1;\n"
+    "void main() {\n"
+    CLIP_TEST
+    "  gl_FragColor = vec4(v_c1.rgb * v_c1.a, v_c1.a);\n"
+    "}\n";
+
+/* Unrotated glyphs (p.z = atlas size) sample exact texel centres, so the picture does not
+ * depend on where the glyph sits in the atlas; rotated ones (p.z = 0) filter. */
+static const char *fs_glyph_src =
+    "#version 120\n"
+    "uniform sampler2D u_tex;\n"
+    "uniform vec4 u_clip;\n"
+    "varying vec4 v_c1;\n"
+    "varying vec4 v_p;\n"
+    "void main() {\n"
+    CLIP_TEST
+    "  vec2 uv = v_p.z > 0.0 ? (floor(v_p.xy * v_p.z) + 0.5) / v_p.z : v_p.xy;\n"
+    "  float a = texture2D(u_tex, uv).r * v_c1.a;\n"
+    "  if (a <= 0.0) discard;\n"
+    "  gl_FragColor = vec4(v_c1.rgb * a, a);\n"
     "}\n";
 
 static GLuint compile(pl_gl *g, GLenum kind, const char *src, char *err, size_t errlen)
@@ -193,6 +241,57 @@ static int ensure_fbos(pl_gl *g, int w, int h, char *err, size_t errlen)
     return 0;
 }
 
+/* Compiles and links the shape and glyph programs. */
+static GLuint link_one(pl_gl *g, const char *vsrc, const char *fsrc, char *err, size_t errlen)
+{
+    GLuint vs = compile(g, GL_VERTEX_SHADER, vsrc, err, errlen);
+    GLuint fs = vs ? compile(g, GL_FRAGMENT_SHADER, fsrc, err, errlen) : 0;
+    if (!fs) {
+        if (vs) g->f.DeleteShader(vs);
+        return 0;
+    }
+    GLuint prog = g->f.CreateProgram();
+    g->f.AttachShader(prog, vs);
+    g->f.AttachShader(prog, fs);
+    g->f.BindAttribLocation(prog, 0, "a_pos");
+    g->f.BindAttribLocation(prog, 1, "a_c0");
+    g->f.BindAttribLocation(prog, 2, "a_c1");
+    g->f.BindAttribLocation(prog, 3, "a_p");
+    g->f.LinkProgram(prog);
+    g->f.DeleteShader(vs);
+    g->f.DeleteShader(fs);
+    GLint ok = 0;
+    g->f.GetProgramiv(prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[512] = "";
+        g->f.GetProgramInfoLog(prog, sizeof log, NULL, log);
+        snprintf(err, errlen, "GL program link failed: %s", log);
+        g->f.DeleteProgram(prog);
+        return 0;
+    }
+    return prog;
+}
+
+static int link_programs(pl_gl *g, char *err, size_t errlen)
+{
+    g->prog[PROG_SHAPE] = link_one(g, vs_src, fs_shape_src, err, errlen);
+    if (!g->prog[PROG_SHAPE]) return -1;
+    g->prog[PROG_GLYPH] = link_one(g, vs_glyph_src, fs_glyph_src, err, errlen);
+    g->prog[PROG_SOLID] = g->prog[PROG_GLYPH] ? link_one(g, vs_glyph_src, fs_solid_src, err, errlen) : 0;
+    if (!g->prog[PROG_SOLID]) {
+        g->f.DeleteProgram(g->prog[PROG_SHAPE]);
+        if (g->prog[PROG_GLYPH]) g->f.DeleteProgram(g->prog[PROG_GLYPH]);
+        return -1;
+    }
+    for (int k = 0; k < PROG_COUNT; k++) {
+        g->u_size[k] = g->f.GetUniformLocation(g->prog[k], "u_size");
+        g->u_clip[k] = g->f.GetUniformLocation(g->prog[k], "u_clip");
+    }
+    g->u_tex = g->f.GetUniformLocation(g->prog[PROG_GLYPH], "u_tex");
+    g->u_core = g->f.GetUniformLocation(g->prog[PROG_SHAPE], "u_core");
+    return 0;
+}
+
 /* ------------------------------------------------------------------ create */
 
 pl_gl *pl_gl_create(pl_gl_get_proc get_proc, int samples, char *err, size_t errlen)
@@ -214,40 +313,11 @@ pl_gl *pl_gl_create(pl_gl_get_proc get_proc, int samples, char *err, size_t errl
         free(g);
         return NULL;
     }
-    GLuint vs = compile(g, GL_VERTEX_SHADER, vs_src, err, errlen);
-    GLuint fs = vs ? compile(g, GL_FRAGMENT_SHADER, fs_src, err, errlen) : 0;
-    if (!fs) {
-        if (vs) g->f.DeleteShader(vs);
+    if (link_programs(g, err, errlen) != 0) {
         pl_glyph_atlas_free(&g->atlas);
         free(g);
         return NULL;
     }
-    g->prog = g->f.CreateProgram();
-    g->f.AttachShader(g->prog, vs);
-    g->f.AttachShader(g->prog, fs);
-    g->f.BindAttribLocation(g->prog, 0, "a_pos");
-    g->f.BindAttribLocation(g->prog, 1, "a_c0");
-    g->f.BindAttribLocation(g->prog, 2, "a_c1");
-    g->f.BindAttribLocation(g->prog, 3, "a_p");
-    g->f.BindAttribLocation(g->prog, 4, "a_mode");
-    g->f.LinkProgram(g->prog);
-    g->f.DeleteShader(vs);
-    g->f.DeleteShader(fs);
-    GLint ok = 0;
-    g->f.GetProgramiv(g->prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[512] = "";
-        g->f.GetProgramInfoLog(g->prog, sizeof log, NULL, log);
-        snprintf(err, errlen, "GL program link failed: %s", log);
-        g->f.DeleteProgram(g->prog);
-        pl_glyph_atlas_free(&g->atlas);
-        free(g);
-        return NULL;
-    }
-    g->u_size = g->f.GetUniformLocation(g->prog, "u_size");
-    g->u_tex = g->f.GetUniformLocation(g->prog, "u_tex");
-    g->u_clip = g->f.GetUniformLocation(g->prog, "u_clip");
-    g->u_fsize = g->f.GetUniformLocation(g->prog, "u_fsize");
     if (g->f.GenVertexArrays && g->f.BindVertexArray) {
         g->f.GenVertexArrays(1, &g->vao);
         g->f.BindVertexArray(g->vao);
@@ -266,9 +336,9 @@ pl_gl *pl_gl_create(pl_gl_get_proc get_proc, int samples, char *err, size_t errl
     if (g->f.RenderbufferStorageMultisample) g->f.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
     g->f.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_rb);
     g->max_size = max_rb > 0 ? max_rb : 4096;
-    if (samples <= 0) { /* default 4; PORELAB_GL_SAMPLES=1 trades polygon edges for speed */
+    if (samples <= 0) { /* default 1: every edge is antialiased in the shaders */
         const char *env = getenv("PORELAB_GL_SAMPLES");
-        samples = env && atoi(env) > 0 ? atoi(env) : 4;
+        samples = env && atoi(env) > 0 ? atoi(env) : 1;
     }
     if (samples > max_samples) samples = max_samples;
     if (samples < 2) samples = 1;
@@ -286,11 +356,12 @@ void pl_gl_destroy(pl_gl **gp)
     GLuint bufs[2] = {g->vbo, g->ibo};
     g->f.DeleteBuffers(2, bufs);
     g->f.DeleteTextures(1, &g->tex);
-    g->f.DeleteProgram(g->prog);
+    for (int k = 0; k < PROG_COUNT; k++) g->f.DeleteProgram(g->prog[k]);
     if (g->vao && g->f.DeleteVertexArrays) g->f.DeleteVertexArrays(1, &g->vao);
     pl_glyph_atlas_free(&g->atlas);
     free(g->v);
     free(g->ix);
+    free(g->bt);
     free(g);
     *gp = NULL;
 }
@@ -333,6 +404,39 @@ static int reserve(pl_gl *g, long nv, long ni)
     return 0;
 }
 
+/* Call before adding the indices of a primitive: starts a new batch when the program, the
+ * clip or the depth test changes (painter's order is the order of the batches). Depth is
+ * tested only where a primitive is drawn in overlapping pieces that must blend once
+ * (translucent strokes, the grown Gouraud triangles); everything else needs no test. */
+static void state(pl_gl *g, int prog, int depth)
+{
+    if (g->failed) return;
+    if (g->nb > 0) {
+        gl_batch *b = &g->bt[g->nb - 1];
+        if (b->prog == prog && b->clip == g->clip && b->depth == depth) return;
+        b->count = g->ni - b->first;
+        if (b->count == 0) {
+            b->prog = (uint8_t)prog;
+            b->clip = (uint8_t)g->clip;
+            b->depth = (uint8_t)depth;
+            return;
+        }
+    }
+    if (g->nb == g->cb) {
+        int c = g->cb ? 2 * g->cb : 64;
+        gl_batch *p = realloc(g->bt, (size_t)c * sizeof *p);
+        if (!p) { g->failed = 1; return; }
+        g->bt = p;
+        g->cb = c;
+    }
+    gl_batch *b = &g->bt[g->nb++];
+    b->first = g->ni;
+    b->count = 0;
+    b->prog = (uint8_t)prog;
+    b->clip = (uint8_t)g->clip;
+    b->depth = (uint8_t)depth;
+}
+
 /* Each primitive gets a depth just in front of all earlier ones: later primitives always
  * pass GL_LESS, and pieces of the same primitive never draw twice on one sample. */
 static void next_depth(pl_gl *g)
@@ -350,16 +454,17 @@ static void to_u8(uint8_t out[4], pl_rgba c)
     }
 }
 
-static gv *vert(pl_gl *g, double x, double y, const uint8_t c0[4], float mode)
+/* A vertex of solid geometry in colour col (coverage 1 in the shape shader). */
+static gv *vert(pl_gl *g, double x, double y, const uint8_t col[4])
 {
     gv *v = &g->v[g->nv++];
     v->x = (float)x;
     v->y = (float)y;
     v->z = g->z;
-    memcpy(v->c0, c0, 4);
-    memset(v->c1, 0, 4);
-    v->p[0] = v->p[1] = v->p[2] = v->p[3] = 0.0f;
-    v->mode = mode + g->clip_mode;
+    memset(v->c0, 0, 4);
+    memcpy(v->c1, col, 4);
+    v->p[0] = v->p[1] = v->p[2] = 0.0f;
+    v->p[3] = HUGE_HW;
     return v;
 }
 
@@ -369,15 +474,6 @@ static void quad_idx(pl_gl *g, uint32_t b)
     i[0] = b; i[1] = b + 1; i[2] = b + 2;
     i[3] = b; i[4] = b + 2; i[5] = b + 3;
     g->ni += 6;
-}
-
-static int circle_segments(double r)
-{
-    const double tol = 0.12; /* px: largest distance between the chord and the arc */
-    if (r <= tol * 2.0) return 8;
-    double a = 2.0 * acos(1.0 - tol / r);
-    int n = (int)ceil(6.283185307179586 / a);
-    return n < 8 ? 8 : n > 720 ? 720 : n;
 }
 
 static void add_circle(pl_gl *g, pl_vec2 c, double r, const pl_prim *p)
@@ -391,22 +487,24 @@ static void add_circle(pl_gl *g, pl_vec2 c, double r, const pl_prim *p)
         w = p->width;
     }
     if (reserve(g, 4, 6)) return;
+    state(g, PROG_SHAPE, 0);
     next_depth(g);
     double e = r + 0.5 * w + 0.75; /* coverage is zero beyond r + w/2 + 0.5 */
     uint32_t b = (uint32_t)g->nv;
     static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
     for (int k = 0; k < 4; k++) {
-        gv *v = vert(g, c.x + sx[k] * e, c.y + sy[k] * e, f, MODE_CIRCLE);
-        memcpy(v->c1, s, 4);
+        gv *v = vert(g, c.x + sx[k] * e, c.y + sy[k] * e, s);
+        memcpy(v->c0, f, 4);
         v->p[0] = (float)(sx[k] * e);
         v->p[1] = (float)(sy[k] * e);
-        v->p[2] = (float)r;
-        v->p[3] = (float)w;
+        v->p[2] = (float)-r;
+        v->p[3] = (float)(0.5 * w);
     }
     quad_idx(g, b);
 }
 
-/* A capsule (round caps) or, with butt = 1, a plain bar from a to b, full width w. */
+/* A capsule (round caps) or, with butt = 1, a plain bar from a to b, full width w. The
+ * caller sets the state. */
 static void add_capsule(pl_gl *g, pl_vec2 a, pl_vec2 b, double w, const uint8_t col[4], int butt)
 {
     if (!(w > 0.0)) return;
@@ -421,7 +519,7 @@ static void add_capsule(pl_gl *g, pl_vec2 a, pl_vec2 b, double w, const uint8_t 
     const double along[4] = {-e, L + e, L + e, -e}, across[4] = {-e, -e, e, e};
     for (int k = 0; k < 4; k++) {
         gv *v = vert(g, a.x + ux * along[k] + nx * across[k], a.y + uy * along[k] + ny * across[k],
-                     col, MODE_CAPSULE);
+                     col);
         v->p[0] = (float)along[k];
         v->p[1] = (float)across[k];
         v->p[2] = (float)L;
@@ -430,27 +528,12 @@ static void add_capsule(pl_gl *g, pl_vec2 a, pl_vec2 b, double w, const uint8_t 
     quad_idx(g, base);
 }
 
-static void add_disc_fan(pl_gl *g, pl_vec2 c, double r, const uint8_t col[4])
-{
-    int n = circle_segments(r);
-    if (reserve(g, n + 1, 3 * n)) return;
-    uint32_t b = (uint32_t)g->nv;
-    vert(g, c.x, c.y, col, MODE_SOLID);
-    for (int k = 0; k < n; k++) {
-        double t = 6.283185307179586 * k / n;
-        vert(g, c.x + r * cos(t), c.y + r * sin(t), col, MODE_SOLID);
-    }
-    for (int k = 0; k < n; k++) {
-        uint32_t *i = g->ix + g->ni;
-        i[0] = b;
-        i[1] = b + 1 + (uint32_t)k;
-        i[2] = b + 1 + (uint32_t)((k + 1) % n);
-        g->ni += 3;
-    }
-}
-
-/* Stroke of a path with round joins and caps. Opaque strokes: capsules (analytic edges);
- * translucent strokes: multisampled quads and join fans under one depth value. */
+/* Stroke of a path: capsules (round caps and joins, analytic edges). An opaque stroke
+ * gives each capsule its own depth (overlaps need no single coverage); a translucent one
+ * shares one depth and is drawn in two passes (batch depth 2, see pl_gl_render): first the
+ * fully covered cores, which write depth, then the antialiased rims where no core was
+ * drawn, so the overlapping pieces of one stroke blend once (as cairo strokes one path);
+ * only the thin rims of two pieces that overlap outside every core blend twice. */
 static void add_stroke(pl_gl *g, const pl_draw_list *dl, const pl_prim *p, int closed,
                        int pairs)
 {
@@ -459,34 +542,14 @@ static void add_stroke(pl_gl *g, const pl_draw_list *dl, const pl_prim *p, int c
     uint8_t col[4];
     to_u8(col, p->stroke);
     const pl_vec2 *pts = dl->points + p->first;
-    double w = p->width, hw = 0.5 * w;
-    next_depth(g);
     int opaque = col[3] == 255;
+    state(g, PROG_SHAPE, opaque ? 0 : 2);
+    next_depth(g);
     int nseg = pairs ? n / 2 : (closed ? n : n - 1);
     for (int s = 0; s < nseg; s++) {
         int i0 = pairs ? 2 * s : s, i1 = pairs ? 2 * s + 1 : (s + 1) % n;
-        pl_vec2 a = pl_dl_px(dl, p, pts[i0]), b = pl_dl_px(dl, p, pts[i1]);
-        if (opaque) { /* own depth: opaque overlaps need no single coverage, and sharing
-                       * one would let a capsule's antialiased rim block its neighbour */
-            if (s > 0) next_depth(g);
-            add_capsule(g, a, b, w, col, 0);
-            continue;
-        }
-        double dx = b.x - a.x, dy = b.y - a.y, L = sqrt(dx * dx + dy * dy);
-        if (L > 1e-9) {
-            double nx = -dy / L * hw, ny = dx / L * hw;
-            if (reserve(g, 4, 6)) return;
-            uint32_t base = (uint32_t)g->nv;
-            vert(g, a.x + nx, a.y + ny, col, MODE_SOLID);
-            vert(g, b.x + nx, b.y + ny, col, MODE_SOLID);
-            vert(g, b.x - nx, b.y - ny, col, MODE_SOLID);
-            vert(g, a.x - nx, a.y - ny, col, MODE_SOLID);
-            quad_idx(g, base);
-        }
-        /* round joins and caps: a disc at the start of every piece, and at the end of the
-         * last one of an open path (or of every independent segment) */
-        add_disc_fan(g, a, hw, col);
-        if (pairs || (!closed && s == nseg - 1)) add_disc_fan(g, b, hw, col);
+        if (opaque && s > 0) next_depth(g);
+        add_capsule(g, pl_dl_px(dl, p, pts[i0]), pl_dl_px(dl, p, pts[i1]), p->width, col, 0);
     }
 }
 
@@ -501,32 +564,124 @@ static int point_in_tri(pl_vec2 p, pl_vec2 a, pl_vec2 b, pl_vec2 c, double sign)
            sign * cross3(c, a, p) >= 0;
 }
 
+/* Antialiased fill of a convex polygon (pixel coordinates, either orientation, n >= 3):
+ * for each edge, the triangle from an inner point to the edge and the strip from the edge
+ * to the edge moved 0.5 px outward (mitred corners, so neighbouring strips meet on the
+ * corner's bisector), carrying the signed distance to that edge; the shape shader turns it
+ * into the coverage clamp(s + 0.5), exact along straight edges. Returns 0 when drawn (or
+ * nothing to draw), 1 when the polygon is too large for the distance encoding (the caller
+ * then fills it without the ramp). */
+static int add_fill_aa(pl_gl *g, const pl_vec2 *pts, int n, const uint8_t col[4])
+{
+    pl_vec2 sbuf[64], *q = n <= 64 ? sbuf : malloc((size_t)n * sizeof *q);
+    pl_vec2 nbuf[64], *nn = n <= 64 ? nbuf : malloc((size_t)n * sizeof *nn);
+    int rc = 0;
+    if (!q || !nn) { g->failed = 1; goto done; }
+    int m = 0; /* drop repeated points */
+    for (int i = 0; i < n; i++) {
+        pl_vec2 a = pts[i];
+        if (m > 0 && fabs(a.x - q[m - 1].x) < 1e-9 && fabs(a.y - q[m - 1].y) < 1e-9) continue;
+        q[m++] = a;
+    }
+    while (m > 1 && fabs(q[0].x - q[m - 1].x) < 1e-9 && fabs(q[0].y - q[m - 1].y) < 1e-9) m--;
+    if (m < 3) goto done;
+    double area2 = 0.0, cx = 0.0, cy = 0.0;
+    for (int i = 0; i < m; i++) {
+        pl_vec2 a = q[i], b = q[(i + 1) % m];
+        area2 += a.x * b.y - b.x * a.y;
+        cx += a.x;
+        cy += a.y;
+    }
+    if (!(fabs(area2) > 1e-12)) goto done;
+    cx /= m;
+    cy /= m;
+    double sgn = area2 > 0 ? 1.0 : -1.0;
+    for (int i = 0; i < m; i++) { /* outward unit normal of edge i (q[i] -> q[i+1]) */
+        pl_vec2 a = q[i], b = q[(i + 1) % m];
+        double ex = b.x - a.x, ey = b.y - a.y, l = sqrt(ex * ex + ey * ey);
+        nn[i] = (pl_vec2){sgn * ey / l, -sgn * ex / l};
+        double s = (a.x - cx) * nn[i].x + (a.y - cy) * nn[i].y; /* inner point's distance */
+        if (!(s < 0.45 * HUGE_HW)) { rc = 1; goto done; }
+    }
+    if (reserve(g, 5L * m, 9L * m)) goto done;
+    state(g, PROG_SHAPE, 0);
+    next_depth(g);
+    const double d = 0.5;
+    for (int i = 0; i < m; i++) {
+        pl_vec2 a = q[i], b = q[(i + 1) % m], ni = nn[i];
+        pl_vec2 o[2];
+        for (int k = 0; k < 2; k++) { /* mitred offsets of a (edges i-1, i) and b (i, i+1) */
+            pl_vec2 n1 = k == 0 ? nn[(i + m - 1) % m] : ni, n2 = k == 0 ? ni : nn[(i + 1) % m];
+            double dot = n1.x * n2.x + n1.y * n2.y;
+            double f = d / (1.0 + dot > 1e-6 ? 1.0 + dot : 1e-6);
+            double ox = (n1.x + n2.x) * f, oy = (n1.y + n2.y) * f, len = sqrt(ox * ox + oy * oy);
+            if (len > 4.0 * d) { ox *= 4.0 * d / len; oy *= 4.0 * d / len; }
+            o[k] = (pl_vec2){ox, oy};
+        }
+        const double px[5] = {cx, a.x, b.x, a.x + o[0].x, b.x + o[1].x};
+        const double py[5] = {cy, a.y, b.y, a.y + o[0].y, b.y + o[1].y};
+        uint32_t base = (uint32_t)g->nv;
+        for (int k = 0; k < 5; k++) {
+            double s = (a.x - px[k]) * ni.x + (a.y - py[k]) * ni.y; /* > 0 inside */
+            gv *v = vert(g, px[k], py[k], col);
+            v->p[1] = (float)(HUGE_HW - s);
+        }
+        uint32_t *ix = g->ix + g->ni;
+        ix[0] = base; ix[1] = base + 1; ix[2] = base + 2;
+        ix[3] = base + 1; ix[4] = base + 2; ix[5] = base + 4;
+        ix[6] = base + 1; ix[7] = base + 4; ix[8] = base + 3;
+        g->ni += 9;
+    }
+done:
+    if (q && q != sbuf) free(q);
+    if (nn && nn != nbuf) free(nn);
+    return rc;
+}
+
 static void add_fill(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
 {
     int n = p->count;
     if (n < 3) return;
     uint8_t col[4];
     to_u8(col, p->fill);
-    if (reserve(g, n, 3 * (n - 2))) return;
-    next_depth(g);
     const pl_vec2 *pts = dl->points + p->first;
+    /* convex (all turns one way): antialiased fill */
+    int pos = 0, neg = 0;
+    {
+        pl_vec2 a = pl_dl_px(dl, p, pts[0]), b = pl_dl_px(dl, p, pts[1 % n]);
+        pl_vec2 a0 = a, b0 = b;
+        for (int i = 0; i < n; i++) {
+            pl_vec2 c = i + 2 < n ? pl_dl_px(dl, p, pts[i + 2]) : (i + 2 == n ? a0 : b0);
+            double cr = cross3(a, b, c);
+            if (cr > 1e-12) pos++;
+            else if (cr < -1e-12) neg++;
+            a = b;
+            b = c;
+        }
+    }
+    if (pos == 0 || neg == 0) {
+        pl_vec2 sbuf[64], *q = n <= 64 ? sbuf : malloc((size_t)n * sizeof *q);
+        if (!q) { g->failed = 1; return; }
+        for (int i = 0; i < n; i++) q[i] = pl_dl_px(dl, p, pts[i]);
+        int rc = add_fill_aa(g, q, n, col);
+        if (q != sbuf) free(q);
+        if (rc == 0) return;
+    }
+    if (reserve(g, n, 3 * (n - 2))) return;
+    state(g, PROG_SOLID, 0);
+    next_depth(g);
     uint32_t b = (uint32_t)g->nv;
     double area = 0.0;
-    int pos = 0, neg = 0;
     for (int i = 0; i < n; i++) {
         pl_vec2 q = pl_dl_px(dl, p, pts[i]);
-        vert(g, q.x, q.y, col, MODE_SOLID);
+        vert(g, q.x, q.y, col);
     }
     gv *v = g->v + b;
     for (int i = 0; i < n; i++) {
-        pl_vec2 a = {v[i].x, v[i].y}, c = {v[(i + 1) % n].x, v[(i + 1) % n].y},
-                d = {v[(i + 2) % n].x, v[(i + 2) % n].y};
+        pl_vec2 a = {v[i].x, v[i].y}, c = {v[(i + 1) % n].x, v[(i + 1) % n].y};
         area += a.x * c.y - c.x * a.y;
-        double cr = cross3(a, c, d);
-        if (cr > 1e-12) pos++;
-        else if (cr < -1e-12) neg++;
     }
-    if (pos == 0 || neg == 0) { /* convex: fan */
+    if (pos == 0 || neg == 0) { /* convex but huge: fan */
         for (int i = 1; i + 1 < n; i++) {
             uint32_t *ix = g->ix + g->ni;
             ix[0] = b; ix[1] = b + (uint32_t)i; ix[2] = b + (uint32_t)i + 1;
@@ -575,13 +730,14 @@ static void add_triangles(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
 {
     int nt = p->count / 3;
     if (nt <= 0 || reserve(g, 3L * nt, 3L * nt)) return;
+    state(g, PROG_SOLID, 1);
     next_depth(g);
     const pl_vec2 *pts = dl->points + p->first;
     const pl_rgba *cols = dl->colors + p->color_first;
     /* Each triangle is grown by 0.3 px (edges moved outward, mitred corners, capped): field
-     * meshes refined adaptively have T-junctions, whose rounding gaps multisampling would
-     * show as thin light seams. The batch shares one depth value, so the overlaps are drawn
-     * once and colours are continuous across edges. */
+     * meshes refined adaptively have T-junctions, whose rounding gaps would show as thin
+     * light seams. The batch shares one depth value, so the overlaps are drawn once and
+     * colours are continuous across edges. */
     const double d = 0.3;
     for (int t = 0; t < nt; t++) {
         pl_vec2 q[3];
@@ -613,7 +769,7 @@ static void add_triangles(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
                 y += oy;
             }
             g->ix[g->ni++] = (uint32_t)g->nv;
-            vert(g, x, y, c, MODE_SOLID);
+            vert(g, x, y, c);
         }
     }
 }
@@ -633,15 +789,11 @@ static void add_arrow(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
     uint8_t sc[4], fc[4];
     to_u8(sc, p->stroke);
     to_u8(fc, p->fill);
+    state(g, PROG_SHAPE, 0);
     next_depth(g);
     add_capsule(g, a, (pl_vec2){bx + ux * 0.5, by + uy * 0.5}, p->width, sc, 1);
-    if (reserve(g, 3, 3)) return;
-    next_depth(g);
-    uint32_t base = (uint32_t)g->nv;
-    vert(g, b.x, b.y, fc, MODE_SOLID);
-    vert(g, bx - uy * half, by + ux * half, fc, MODE_SOLID);
-    vert(g, bx + uy * half, by - ux * half, fc, MODE_SOLID);
-    for (int k = 0; k < 3; k++) g->ix[g->ni++] = base + (uint32_t)k;
+    const pl_vec2 tri[3] = {b, {bx - uy * half, by + ux * half}, {bx + uy * half, by - ux * half}};
+    add_fill_aa(g, tri, 3, fc);
 }
 
 /* Text as in the cairo backend: horizontal anchor from the advance width, vertical anchor
@@ -676,12 +828,10 @@ static void add_text(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
         const double lx[4] = {bx0, bx1, bx1, bx0}, ly[4] = {by0, by0, by1, by1};
         uint8_t bc[4];
         to_u8(bc, p->stroke);
-        if (reserve(g, 4, 6)) return;
-        next_depth(g);
-        uint32_t base = (uint32_t)g->nv;
+        pl_vec2 box[4];
         for (int k = 0; k < 4; k++)
-            vert(g, at.x + lx[k] * ca - ly[k] * sa, at.y + lx[k] * sa + ly[k] * ca, bc, MODE_SOLID);
-        quad_idx(g, base);
+            box[k] = (pl_vec2){at.x + lx[k] * ca - ly[k] * sa, at.y + lx[k] * sa + ly[k] * ca};
+        add_fill_aa(g, box, 4, bc);
     }
     {
         uint8_t col[4];
@@ -693,6 +843,7 @@ static void add_text(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
             if (!gl) continue;
             if (gl->w > 0 && gl->h > 0) {
                 if (reserve(g, 4, 6)) return;
+                state(g, PROG_GLYPH, 0);
                 next_depth(g);
                 double lx[4], ly[4];
                 double x0 = pen + gl->left, y0 = y - gl->top;
@@ -710,11 +861,11 @@ static void add_text(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
                 uint32_t base = (uint32_t)g->nv;
                 for (int k = 0; k < 4; k++) {
                     double px = lx[k] + ox, py = ly[k] + oy;
-                    gv *v = vert(g, at.x + px * ca - py * sa, at.y + px * sa + py * ca, col,
-                                 MODE_GLYPH);
+                    gv *v = vert(g, at.x + px * ca - py * sa, at.y + px * sa + py * ca, col);
                     v->p[0] = (float)(u[k] * inv);
                     v->p[1] = (float)(vv[k] * inv);
                     v->p[2] = rotated ? 0.0f : (float)PL_ATLAS_SIZE;
+                    v->p[3] = 0.0f;
                 }
                 quad_idx(g, base);
             }
@@ -723,14 +874,12 @@ static void add_text(pl_gl *g, const pl_draw_list *dl, const pl_prim *p)
     }
 }
 
-static void build(pl_gl *g, const pl_draw_list *dl)
+/* Adds the primitives of dl; world-space ones are clipped when has_clip (the frame's). */
+static void build_list(pl_gl *g, const pl_draw_list *dl, int has_clip)
 {
-    g->nv = g->ni = 0;
-    g->failed = 0;
-    g->z = 1.0f;
     for (int i = 0; i < dl->prim_count; i++) {
         const pl_prim *p = &dl->prims[i];
-        g->clip_mode = dl->has_clip && p->space == PL_SPACE_WORLD ? 8.0f : 0.0f;
+        g->clip = has_clip && p->space == PL_SPACE_WORLD;
         switch (p->kind) {
         case PL_PRIM_CIRCLE:
             add_circle(g, pl_dl_px(dl, p, dl->points[p->first]), pl_dl_px_radius(dl, p), p);
@@ -743,6 +892,7 @@ static void build(pl_gl *g, const pl_draw_list *dl)
             if (p->count == 2) { /* the common single line: one capsule */
                 uint8_t col[4];
                 to_u8(col, p->stroke);
+                state(g, PROG_SHAPE, 0);
                 next_depth(g);
                 add_capsule(g, pl_dl_px(dl, p, dl->points[p->first]),
                             pl_dl_px(dl, p, dl->points[p->first + 1]), p->width, col, 0);
@@ -759,11 +909,28 @@ static void build(pl_gl *g, const pl_draw_list *dl)
     }
 }
 
+static void build(pl_gl *g, const pl_draw_list *dl, const pl_draw_list *over)
+{
+    g->nv = g->ni = 0;
+    g->nb = 0;
+    g->failed = 0;
+    g->z = 1.0f;
+    build_list(g, dl, dl->has_clip);
+    if (over) build_list(g, over, dl->has_clip);
+    if (g->nb > 0) g->bt[g->nb - 1].count = g->ni - g->bt[g->nb - 1].first;
+}
+
 /* ------------------------------------------------------------------ render */
 
 int pl_gl_render(pl_gl *g, const pl_draw_list *dl, char *err, size_t errlen)
 {
-    if (dl->failed) {
+    return pl_gl_render_over(g, dl, NULL, err, errlen);
+}
+
+int pl_gl_render_over(pl_gl *g, const pl_draw_list *dl, const pl_draw_list *over, char *err,
+                      size_t errlen)
+{
+    if (dl->failed || (over && over->failed)) {
         snprintf(err, errlen, "the draw list is incomplete (out of memory while building it)");
         return -1;
     }
@@ -773,8 +940,8 @@ int pl_gl_render(pl_gl *g, const pl_draw_list *dl, char *err, size_t errlen)
         return -1;
     }
     int gen = g->atlas.generation;
-    build(g, dl);
-    if (g->atlas.generation != gen) build(g, dl); /* atlas was cleared mid-frame */
+    build(g, dl, over);
+    if (g->atlas.generation != gen) build(g, dl, over); /* atlas was cleared mid-frame */
     if (g->failed) {
         snprintf(err, errlen, "out of memory while building the GL frame");
         return -1;
@@ -803,12 +970,6 @@ ok:
     f->DepthMask(GL_TRUE);
     f->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (g->ni > 0) {
-        f->UseProgram(g->prog);
-        f->Uniform2f(g->u_size, (float)w, (float)h);
-        f->Uniform2f(g->u_fsize, (float)w, (float)h);
-        f->Uniform4f(g->u_clip, (float)dl->clip.x0, (float)dl->clip.y0, (float)dl->clip.x1,
-                     (float)dl->clip.y1);
-        f->Uniform1i(g->u_tex, 0);
         f->ActiveTexture(GL_TEXTURE0);
         f->BindTexture(GL_TEXTURE_2D, g->tex);
         if (g->atlas.dirty) {
@@ -819,23 +980,67 @@ ok:
         }
         f->Enable(GL_BLEND);
         f->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        f->Enable(GL_DEPTH_TEST);
         f->DepthFunc(GL_LESS);
         if (g->samples > 1) f->Enable(GL_MULTISAMPLE);
+        /* the buffers keep their storage between frames (reallocated only to grow): a new
+         * allocation per frame costs page faults on the whole vertex array in llvmpipe */
+        long vb = g->nv * (long)sizeof(gv), ib = g->ni * (long)sizeof(uint32_t);
         f->BindBuffer(GL_ARRAY_BUFFER, g->vbo);
-        f->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(g->nv * (long)sizeof(gv)), g->v,
-                      GL_STREAM_DRAW);
+        if (vb > g->vbo_bytes) {
+            g->vbo_bytes = vb + vb / 4;
+            f->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)g->vbo_bytes, NULL, GL_DYNAMIC_DRAW);
+        }
+        f->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)vb, g->v);
         f->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g->ibo);
-        f->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(g->ni * (long)sizeof(uint32_t)), g->ix,
-                      GL_STREAM_DRAW);
+        if (ib > g->ibo_bytes) {
+            g->ibo_bytes = ib + ib / 4;
+            f->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)g->ibo_bytes, NULL, GL_DYNAMIC_DRAW);
+        }
+        f->BufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, (GLsizeiptr)ib, g->ix);
         const GLsizei st = (GLsizei)sizeof(gv);
-        for (GLuint a = 0; a < 5; a++) f->EnableVertexAttribArray(a);
+        for (GLuint a = 0; a < 4; a++) f->EnableVertexAttribArray(a);
         f->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, st, (const void *)offsetof(gv, x));
         f->VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, st, (const void *)offsetof(gv, c0));
         f->VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, st, (const void *)offsetof(gv, c1));
         f->VertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, st, (const void *)offsetof(gv, p));
-        f->VertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, st, (const void *)offsetof(gv, mode));
-        f->DrawElements(GL_TRIANGLES, (GLsizei)g->ni, GL_UNSIGNED_INT, NULL);
+        /* the clip rectangle in GL window coordinates (y up) */
+        const float cx0 = (float)dl->clip.x0, cx1 = (float)dl->clip.x1;
+        const float cy0 = (float)(h - dl->clip.y1), cy1 = (float)(h - dl->clip.y0);
+        int cur_prog = -1, cur_clip = -1, cur_depth = -1;
+        for (int i = 0; i < g->nb; i++) {
+            const gl_batch *bt = &g->bt[i];
+            if (bt->count <= 0) continue;
+            if (bt->prog != cur_prog) {
+                cur_prog = bt->prog;
+                cur_clip = -1;
+                f->UseProgram(g->prog[cur_prog]);
+                f->Uniform2f(g->u_size[cur_prog], (float)w, (float)h);
+                if (cur_prog == PROG_SHAPE) f->Uniform1f(g->u_core, 0.0f);
+                if (cur_prog == PROG_GLYPH) f->Uniform1i(g->u_tex, 0);
+            }
+            if (bt->clip != cur_clip) {
+                cur_clip = bt->clip;
+                if (cur_clip) f->Uniform4f(g->u_clip[cur_prog], cx0, cy0, cx1, cy1);
+                else f->Uniform4f(g->u_clip[cur_prog], -1e9f, -1e9f, 1e9f, 1e9f);
+            }
+            if (bt->depth != cur_depth) {
+                cur_depth = bt->depth;
+                if (cur_depth) f->Enable(GL_DEPTH_TEST);
+                else f->Disable(GL_DEPTH_TEST);
+            }
+            const void *off = (const void *)(bt->first * (long)sizeof(uint32_t));
+            if (bt->depth == 2) { /* translucent stroke: cores (writing depth), then rims */
+                f->Uniform1f(g->u_core, 0.999f);
+                f->DrawElements(GL_TRIANGLES, (GLsizei)bt->count, GL_UNSIGNED_INT, off);
+                f->Uniform1f(g->u_core, 0.0f);
+                f->DepthMask(GL_FALSE);
+                f->DrawElements(GL_TRIANGLES, (GLsizei)bt->count, GL_UNSIGNED_INT, off);
+                f->DepthMask(GL_TRUE);
+                continue;
+            }
+            f->DrawElements(GL_TRIANGLES, (GLsizei)bt->count, GL_UNSIGNED_INT,
+                            (const void *)(bt->first * (long)sizeof(uint32_t)));
+        }
         f->Disable(GL_DEPTH_TEST);
         f->Disable(GL_BLEND);
     }

@@ -56,6 +56,7 @@ typedef void *(*pl_gl_get_proc)(const char *name);
     X(void, Uniform2f, (GLint, GLfloat, GLfloat))                                             \
     X(void, Uniform4f, (GLint, GLfloat, GLfloat, GLfloat, GLfloat))                           \
     X(void, Uniform1i, (GLint, GLint))                                                        \
+    X(void, Uniform1f, (GLint, GLfloat))                                                      \
     X(void, BindAttribLocation, (GLuint, GLuint, const GLchar *))                             \
     X(void, EnableVertexAttribArray, (GLuint))                                                \
     X(void, VertexAttribPointer, (GLuint, GLint, GLenum, GLboolean, GLsizei, const GLvoid *)) \
@@ -65,6 +66,7 @@ typedef void *(*pl_gl_get_proc)(const char *name);
     X(void, DeleteBuffers, (GLsizei, const GLuint *))                                         \
     X(void, BindBuffer, (GLenum, GLuint))                                                     \
     X(void, BufferData, (GLenum, GLsizeiptr, const GLvoid *, GLenum))                         \
+    X(void, BufferSubData, (GLenum, GLintptr, GLsizeiptr, const GLvoid *))                    \
     X(void, ActiveTexture, (GLenum))                                                          \
     X(void, BlendFuncSeparate, (GLenum, GLenum, GLenum, GLenum))                              \
     X(void, GenFramebuffers, (GLsizei, GLuint *))                                             \

@@ -22,8 +22,9 @@ typedef struct win {
     pl_gl *gl;      /* the window's renderer (PORELAB_WINDOW_SAMPLES, default as headless) */
     pl_gl *gl_shot; /* screenshots: the headless default, created on the first screenshot */
     pl_wsim sim;
-    pl_draw_list scene_dl, frame_dl, hud, tmp;
-    pl_render_scene rs;
+    pl_draw_list scene_dl, hud, tmp;
+    pl_render_scene rs; /* the world as drawn in the last frame */
+    int rs_fluid;       /* rs holds the fluid field */
     int playing, show_help, show_hud, quit;
     long long speed;        /* steps per drawn frame */
     int mx, my, hover, grab, panning, pan_x, pan_y, param_sel, shots;
@@ -156,7 +157,20 @@ static int build_scene(win *g)
     int present = pl_scene_overlay(g->sim.s, &g->sim.overlay);
     g->sim.ropt.overlay = present > 0 ? &g->sim.overlay : NULL;
     if (present < 0) snprintf(g->sim.error, sizeof g->sim.error, "%s", pl_scene_error(g->sim.s));
-    if (pl_render_build(g->sim.w, &g->sim.ropt, &g->scene_dl, err, sizeof err) != 0) {
+    /* what pl_render_build does, into the window's own scene copy: it keeps its buffers
+     * between frames (a fresh copy per frame costs page faults on every frame) and serves
+     * hovering and picking too */
+    const unsigned fluid_layers = PL_LAYER_MESH | PL_LAYER_PRESSURE | PL_LAYER_ISOLINES |
+                                  PL_LAYER_VELOCITY;
+    int rc = pl_render_scene_capture(&g->rs, g->sim.w);
+    g->rs_fluid = 0;
+    if (rc == 0 && (g->sim.ropt.layers & fluid_layers)) {
+        rc = pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
+        g->rs_fluid = 1;
+    }
+    if (rc != 0) snprintf(err, sizeof err, "out of memory while reading the world");
+    else rc = pl_render_build_scene(&g->scene_dl, &g->rs, &g->sim.ropt, err, sizeof err);
+    if (rc != 0) {
         snprintf(g->sim.error, sizeof g->sim.error, "render: %s", err);
         return -1;
     }
@@ -309,9 +323,12 @@ static void rewind_to(win *g, long long step)
 {
     double t0 = now_s();
     if (pl_wsim_rewind(&g->sim, step) == 0) {
-        message(g, "rewound (replayed in %.2f s)", now_s() - t0);
-        printf("rewind: step %lld (t = %.9g s), replayed in %.3f s\n", pl_wsim_steps(&g->sim),
-               pl_world_time(g->sim.w), now_s() - t0);
+        message(g, "rewound (%.2f s)", now_s() - t0);
+        char from[64] = "the start";
+        if (g->sim.last_rewind_from >= 0)
+            snprintf(from, sizeof from, "the snapshot at step %lld", g->sim.last_rewind_from);
+        printf("rewind: step %lld (t = %.9g s), replayed from %s in %.3f s\n",
+               pl_wsim_steps(&g->sim), pl_world_time(g->sim.w), from, now_s() - t0);
         fflush(stdout);
     }
     g->playing = 0;
@@ -366,10 +383,12 @@ static void key(win *g, SDL_Keycode k, Uint16 mod)
     case SDLK_s: spring(g); pl_wsim_advance(&g->sim, frame_interval(g)); g->playing = 0; break;
     case SDLK_PERIOD: spring(g); pl_wsim_advance(&g->sim, 1); g->playing = 0; break;
     case SDLK_PLUS: case SDLK_EQUALS: case SDLK_KP_PLUS:
-        if (g->speed < (1LL << 40)) g->speed *= 2;
-        break;
     case SDLK_MINUS: case SDLK_KP_MINUS:
-        if (g->speed > 1) g->speed /= 2;
+        if ((k == SDLK_MINUS || k == SDLK_KP_MINUS) ? g->speed > 1 : g->speed < (1LL << 40))
+            g->speed = (k == SDLK_MINUS || k == SDLK_KP_MINUS) ? g->speed / 2 : g->speed * 2;
+        message(g, "%.0f steps per frame", (double)g->speed);
+        printf("speed: %lld steps per frame\n", g->speed);
+        fflush(stdout);
         break;
     case SDLK_r:
         if (pl_wsim_load(&g->sim, !shift) == 0) message(g, shift ? "restarted with the scene's values" : "restarted", 0);
@@ -610,22 +629,14 @@ int pl_window_main(const pl_opts *o)
             pl_wsim_advance(&g->sim, n);
         }
         if (build_scene(g) != 0) break;
-        pl_render_scene_capture(&g->rs, g->sim.w);
         if (g->show_hud) {
             pl_render_scene_stress(&g->rs);
-            if (pl_world_fluid_node_count(g->sim.w) > 0)
+            if (!g->rs_fluid && pl_world_fluid_node_count(g->sim.w) > 0)
                 pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
             g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
         }
         build_hud(g);
-        pl_draw_list_clear(&g->frame_dl);
-        pl_draw_list_append(&g->frame_dl, &g->scene_dl);
-        pl_draw_list_append(&g->frame_dl, &g->hud);
-        g->frame_dl.camera = g->scene_dl.camera;
-        g->frame_dl.background = g->scene_dl.background;
-        g->frame_dl.clip = g->scene_dl.clip;
-        g->frame_dl.has_clip = g->scene_dl.has_clip;
-        if (pl_gl_render(g->gl, &g->frame_dl, err, sizeof err) != 0) {
+        if (pl_gl_render_over(g->gl, &g->scene_dl, &g->hud, err, sizeof err) != 0) {
             fprintf(stderr, "porelab: %s\n", err);
             break;
         }
@@ -643,7 +654,6 @@ int pl_window_main(const pl_opts *o)
            wall > 0 ? frames / wall : 0.0);
     pl_render_scene_free(&g->rs);
     pl_draw_list_free(&g->scene_dl);
-    pl_draw_list_free(&g->frame_dl);
     pl_draw_list_free(&g->hud);
     pl_draw_list_free(&g->tmp);
     pl_image_free(&g->img);

@@ -1,8 +1,8 @@
 /* Scene, stepping, parameters and the replay log of the window (see window_sim.h). */
 #include "window_sim.h"
+#include "porelab/fluid.h"
 #include "scene_render.h"
 
-#include <lauxlib.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,82 +28,12 @@ long long pl_wsim_steps(const pl_wsim *sim)
     return sim->w ? (long long)pl_world_step_count(sim->w) - sim->start_step : 0;
 }
 
-/* Reads the parameter list (result.params or the global PARAMS): a list of { name=, value=, min=, max=, step=, unit=, set=function }
- * (set(world, value) is called between steps). Raises Lua errors (protected caller). */
-typedef struct params_ud {
-    pl_wparam *p;
-    int n;
-} params_ud;
-
-static int read_params(lua_State *L)
-{
-    params_ud *ud = lua_touserdata(L, 1);
-    ud->n = 0;
-    if (lua_isnil(L, 2)) return 0;
-    luaL_checktype(L, 2, LUA_TTABLE);
-    lua_Integer n = luaL_len(L, 2);
-    for (lua_Integer i = 1; i <= n && ud->n < PL_WSIM_MAX_PARAMS; i++) {
-        lua_geti(L, 2, i);
-        if (!lua_istable(L, -1)) luaL_error(L, "params[%d] must be a table", (int)i);
-        pl_wparam *p = &ud->p[ud->n];
-        memset(p, 0, sizeof *p);
-        lua_getfield(L, -1, "name");
-        snprintf(p->name, sizeof p->name, "%s", luaL_optstring(L, -1, "?"));
-        lua_pop(L, 1);
-        lua_getfield(L, -1, "unit");
-        snprintf(p->unit, sizeof p->unit, "%s", luaL_optstring(L, -1, ""));
-        lua_pop(L, 1);
-        const char *f[4] = {"value", "min", "max", "step"};
-        double *v[4] = {&p->value, &p->min, &p->max, &p->step};
-        for (int k = 0; k < 4; k++) {
-            lua_getfield(L, -1, f[k]);
-            if (k < 3 && !lua_isnumber(L, -1))
-                luaL_error(L, "params[%d].%s must be a number", (int)i, f[k]);
-            *v[k] = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : 0.0;
-            lua_pop(L, 1);
-        }
-        if (!(p->max > p->min)) luaL_error(L, "params[%d]: max must be > min", (int)i);
-        if (p->value < p->min || p->value > p->max)
-            luaL_error(L, "params[%d].value must be in [min, max]", (int)i);
-        if (!(p->step > 0.0)) p->step = (p->max - p->min) / 20.0;
-        lua_getfield(L, -1, "set");
-        if (!lua_isfunction(L, -1))
-            luaL_error(L, "params[%d].set must be a function(world, value)", (int)i);
-        lua_pop(L, 2);
-        p->initial = p->value;
-        ud->n++;
-    }
-    return 0;
-}
-
-/* Pushes the scene's parameter list: result.params, else the global PARAMS (scenes use the
- * global while the scene loader does not accept a `params` field in the result table). */
-static void push_params(pl_scene *s)
-{
-    lua_State *L = pl_scene_lua(s);
-    if (pl_scene_push_result_field(s, "params") == LUA_TNIL) {
-        lua_pop(L, 1);
-        lua_getglobal(L, "PARAMS");
-    }
-}
-
 static int call_set(pl_wsim *sim, int i, double value)
 {
-    lua_State *L = pl_scene_lua(sim->s);
-    int top = lua_gettop(L);
-    push_params(sim->s);
-    lua_geti(L, -1, i + 1);
-    lua_getfield(L, -1, "set");
-    pl_scene_push_result_field(sim->s, "world");
-    lua_pushnumber(L, value);
-    int rc = lua_pcall(L, 2, 0, 0);
-    if (rc != LUA_OK) {
-        snprintf(sim->error, sizeof sim->error, "%s: params[%d].set: %s",
-                 pl_scene_path(sim->s), i + 1, lua_tostring(L, -1));
-        lua_settop(L, top);
+    if (pl_scene_set_param(sim->s, i, value) != 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(sim->s));
         return -1;
     }
-    lua_settop(L, top);
     return 0;
 }
 
@@ -121,8 +51,69 @@ static int apply_event(pl_wsim *sim, const pl_wevent *e)
     }
 }
 
+/* ------------------------------------------------------------ snapshots */
+
+static void drop_snaps_from(pl_wsim *sim, long long step)
+{
+    while (sim->nsnaps > 0 && sim->snaps[sim->nsnaps - 1].step >= step) {
+        pl_wsnap *z = &sim->snaps[--sim->nsnaps];
+        sim->snap_bytes -= pl_snapshot_bytes(z->s);
+        pl_snapshot_destroy(&z->s);
+    }
+}
+
+static void free_snaps(pl_wsim *sim)
+{
+    drop_snaps_from(sim, LLONG_MIN);
+    free(sim->snaps);
+    sim->snaps = NULL;
+    sim->capsnaps = 0;
+    sim->snap_bytes = 0;
+}
+
+/* Takes a snapshot at the current step when snapshots are possible and the last one is at
+ * least snap_spacing steps back; thins them out when over the memory budget. */
+static void maybe_snapshot(pl_wsim *sim)
+{
+    if (!sim->snap_ok) return;
+    long long now = pl_wsim_steps(sim);
+    if (sim->nsnaps > 0 && now < sim->snaps[sim->nsnaps - 1].step + sim->snap_spacing) return;
+    if (sim->nsnaps == sim->capsnaps) {
+        int c = sim->capsnaps ? 2 * sim->capsnaps : 64;
+        pl_wsnap *p = realloc(sim->snaps, (size_t)c * sizeof *p);
+        if (!p) { sim->snap_ok = 0; return; }
+        sim->snaps = p;
+        sim->capsnaps = c;
+    }
+    pl_snapshot *ss = pl_world_snapshot(sim->w);
+    if (!ss) { sim->snap_ok = 0; return; } /* out of memory: rewinds replay from the start */
+    pl_wsnap *z = &sim->snaps[sim->nsnaps++];
+    z->step = now;
+    z->next_k = sim->next_k;
+    z->replay = sim->replay;
+    for (int i = 0; i < sim->nparams; i++) z->values[i] = sim->params[i].value;
+    z->s = ss;
+    sim->snap_bytes += pl_snapshot_bytes(ss);
+    if (sim->snap_bytes > PL_WSIM_SNAP_BYTES && sim->nsnaps > 2) {
+        /* keep the first, every other one after it, and the newest */
+        int m = 1;
+        for (int i = 1; i < sim->nsnaps; i++) {
+            if (i % 2 == 0 || i == sim->nsnaps - 1) {
+                sim->snaps[m++] = sim->snaps[i];
+            } else {
+                sim->snap_bytes -= pl_snapshot_bytes(sim->snaps[i].s);
+                pl_snapshot_destroy(&sim->snaps[i].s);
+            }
+        }
+        sim->nsnaps = m;
+        sim->snap_spacing *= 2;
+    }
+}
+
 static int log_event(pl_wsim *sim, pl_wevent e)
 {
+    /* a snapshot at or after the event's step does not contain it */
+    drop_snaps_from(sim, e.step);
     if (sim->nlog == sim->caplog) {
         int nc = sim->caplog ? 2 * sim->caplog : 256;
         pl_wevent *p = realloc(sim->log, (size_t)nc * sizeof *p);
@@ -176,22 +167,25 @@ static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
         sim->mtime = mt;
         return -1;
     }
-    pl_wparam params[PL_WSIM_MAX_PARAMS];
-    params_ud ud = {params, 0};
-    lua_State *L = pl_scene_lua(s);
-    int top = lua_gettop(L);
-    lua_pushcfunction(L, read_params);
-    lua_pushlightuserdata(L, &ud);
-    push_params(s);
-    if (lua_pcall(L, 2, 0, 0) != LUA_OK) {
-        snprintf(sim->error, sizeof sim->error, "%s: params: %s", pl_scene_path(s),
-                 lua_tostring(L, -1));
-        lua_settop(L, top);
+    /* the scene's parameters: result.params (checked by the loader) or the global PARAMS */
+    pl_scene_param sp[PL_SCENE_MAX_PARAMS];
+    int np = pl_scene_params(s, sp);
+    if (np < 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(s));
         pl_scene_destroy(&s);
         sim->mtime = mt;
         return -1;
     }
-    lua_settop(L, top);
+    pl_wparam params[PL_WSIM_MAX_PARAMS];
+    memset(params, 0, sizeof params);
+    for (int i = 0; i < np && i < PL_WSIM_MAX_PARAMS; i++) {
+        snprintf(params[i].name, sizeof params[i].name, "%.47s", sp[i].name);
+        snprintf(params[i].unit, sizeof params[i].unit, "%.23s", sp[i].unit);
+        params[i].value = params[i].initial = sp[i].value;
+        params[i].min = sp[i].min;
+        params[i].max = sp[i].max;
+        params[i].step = sp[i].step;
+    }
     if (sim->s) pl_scene_destroy(&sim->s);
     sim->s = s;
     sim->w = w;
@@ -215,10 +209,18 @@ static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
     sim->start_step = (long long)pl_world_step_count(w);
     sim->next_k = 0;
     memcpy(sim->params, params, sizeof params);
-    sim->nparams = ud.n;
+    sim->nparams = np < PL_WSIM_MAX_PARAMS ? np : PL_WSIM_MAX_PARAMS;
     sim->mtime = mt;
     sim->stopped = 0;
     sim->error[0] = 0;
+    /* snapshots: the engine snapshots worlds without a pore fluid; an on_frame hook may keep
+     * state in Lua that a snapshot would not restore */
+    free_snaps(sim);
+    int hook = pl_scene_push_result_field(s, "on_frame") != LUA_TNIL;
+    lua_pop(pl_scene_lua(s), 1);
+    sim->snap_ok = !hook && pl_world_fluid_node_count(w) == 0;
+    long long fi = pl_run_plan_frame_step(&plan, 1) - pl_run_plan_frame_step(&plan, 0);
+    sim->snap_spacing = fi > 0 ? fi : 1;
     return 0;
 }
 
@@ -239,6 +241,7 @@ int pl_wsim_load(pl_wsim *sim, int keep_params)
 
 void pl_wsim_free(pl_wsim *sim)
 {
+    free_snaps(sim);
     pl_scene_destroy(&sim->s);
     pl_draw_list_free(&sim->overlay);
     free(sim->log);
@@ -281,6 +284,7 @@ int pl_wsim_advance(pl_wsim *sim, long long n)
      * further, and the picture at a frame step is the state run draws there. */
     while (1) {
         if (apply_pending(sim) != 0) return -1;
+        maybe_snapshot(sim);
         long long now = pl_wsim_steps(sim);
         if (now >= target) break;
         while (pl_run_plan_frame_step(&sim->plan, sim->next_k) <= now)
@@ -306,9 +310,28 @@ int pl_wsim_advance(pl_wsim *sim, long long n)
 int pl_wsim_rewind(pl_wsim *sim, long long step)
 {
     if (step < 0) step = 0;
-    /* keep the interactions up to the target step */
+    /* keep the interactions up to the target step, and the snapshots before it */
     int keep = 0;
     while (keep < sim->nlog && sim->log[keep].step <= step) keep++;
+    drop_snaps_from(sim, step + 1);
+    while (sim->nsnaps > 0) { /* from the latest snapshot at or before the target */
+        pl_wsnap *z = &sim->snaps[sim->nsnaps - 1];
+        if (z->replay > keep || pl_world_restore(sim->w, z->s) != PL_OK) {
+            drop_snaps_from(sim, z->step);
+            continue;
+        }
+        sim->nlog = keep;
+        sim->replay = z->replay;
+        sim->next_k = z->next_k;
+        for (int i = 0; i < sim->nparams; i++) sim->params[i].value = z->values[i];
+        sim->stopped = 0;
+        sim->error[0] = 0;
+        sim->last_rewind_from = z->step;
+        int rc = pl_wsim_advance(sim, step - z->step);
+        if (rc == 0) rc = apply_pending(sim);
+        return rc;
+    }
+    sim->last_rewind_from = -1;
     pl_wevent *log = sim->log;
     int caplog = sim->caplog;
     sim->log = NULL;

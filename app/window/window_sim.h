@@ -1,20 +1,27 @@
 /* The simulation behind the window: the scene, its world, the run plan (when on_frame is
- * called), scene parameters, and an interaction log that makes rewinding exact.
+ * called), scene parameters, in-memory snapshots, and an interaction log that makes
+ * rewinding exact.
  *
- * Rewind: the engine has no snapshot/restore of its full state yet, so rewinding to step S
- * reloads the scene and replays it deterministically to S, applying the logged interactions
- * (parameter changes, fix/release, spring loads) at the steps where they happened. The
- * result is bit-identical to the first pass (same state hash); its cost grows with S. */
+ * Rewind to step S: from the latest snapshot at or before S (pl_world_snapshot: bodies,
+ * contacts with their history, energy tallies, flags), replaying the logged interactions
+ * (parameter changes, fix/release, spring loads) and the steps from there to S. Snapshots
+ * are taken at scene frames while playing (memory budget PL_WSIM_SNAP_BYTES; when it is
+ * full every other snapshot is dropped, so they thin out evenly) for worlds the engine can
+ * snapshot and scenes whose Lua state cannot diverge: the engine does not capture pore-fluid
+ * state yet, and an on_frame hook may keep state in Lua variables. Otherwise the scene is
+ * reloaded and replayed from t = 0. Either way the result is bit-identical to the first
+ * pass (same state hash). */
 #ifndef PL_APP_WINDOW_SIM_H
 #define PL_APP_WINDOW_SIM_H
 
 #include <limits.h>
 #include <time.h>
 #include "cli_common.h"
+#include "scene.h"
 #include "run_plan.h"
 #include "render/drawlist.h"
 
-#define PL_WSIM_MAX_PARAMS 16
+#define PL_WSIM_MAX_PARAMS PL_SCENE_MAX_PARAMS
 
 typedef struct pl_wparam {
     char name[48];
@@ -28,6 +35,15 @@ typedef struct pl_wevent {
     int kind, index; /* parameter index or body */
     double a, b;     /* value / motion / load x, y */
 } pl_wevent;
+
+#define PL_WSIM_SNAP_BYTES ((size_t)256 << 20)
+
+typedef struct pl_wsnap {
+    long long step, next_k; /* steps since the scene start; next on_frame index */
+    int replay;             /* log events already applied */
+    double values[PL_WSIM_MAX_PARAMS];
+    pl_snapshot *s;
+} pl_wsnap;
 
 typedef struct pl_wsim {
     const pl_opts *o;
@@ -44,6 +60,11 @@ typedef struct pl_wsim {
     int nparams;
     pl_wevent *log;
     int nlog, caplog, replay; /* replay: log events already applied */
+    pl_wsnap *snaps;            /* ascending steps */
+    int nsnaps, capsnaps, snap_ok;
+    long long snap_spacing;     /* steps between snapshots (doubles when thinned) */
+    size_t snap_bytes;
+    long long last_rewind_from; /* step of the snapshot the last rewind started from, -1 = t = 0 */
     char error[1024];           /* shown in the window ("" = none) */
     int stopped;                /* a guard fired or a hook failed: stepping disabled */
     struct timespec mtime;      /* scene file modification time */
@@ -58,7 +79,8 @@ long long pl_wsim_steps(const pl_wsim *sim);
 /* Advances n steps (calls on_frame at the plan's frame steps, applies logged events on
  * replay). Returns 0, or -1 (sim->error set, sim->stopped = 1). */
 int pl_wsim_advance(pl_wsim *sim, long long n);
-/* Goes back to step `step` (>= 0) by replay; drops the interactions after it. */
+/* Goes back to step `step` (>= 0) from the latest snapshot before it (or from the start);
+ * drops the interactions after it. */
 int pl_wsim_rewind(pl_wsim *sim, long long step);
 /* Interactions (applied now and logged for rewinds). */
 int pl_wsim_set_param(pl_wsim *sim, int i, double value);

@@ -39,7 +39,7 @@ local function density_param(name, i, rho)
 end
 
 -- Parameters the window lets you change while it runs (porelab view: tab, up/down).
-PARAMS = {
+local params = {
   density_param("wood block", 1, 600),
   density_param("ice block", 2, 920),
   density_param("brick block", 3, 1900),
@@ -49,6 +49,7 @@ PARAMS = {
 
 return {
   world = w,
+  params = params,
   run = { t_end = 4.0, fps = 30 },
   render = { size = { 800, 600 }, camera = { -0.03, -0.02, W + 0.03, 0.44 },
              layers = "bodies,pressure,isolines,colorbar,title,time",

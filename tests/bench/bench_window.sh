@@ -3,7 +3,7 @@
 # window_grains.lua at 1280x720 (bodies, force chains, pressure field), 10,000 and 50,000
 # grains; paused (drawing only) and playing (--speed 1: one engine step per drawn frame).
 # vsync off (PORELAB_VSYNC=0). The window's sample count comes from PORELAB_WINDOW_SAMPLES
-# (default 4, as headless). Prints one line per case; CSV to $OUT/bench_window.csv.
+# (default 1, as headless). Prints one line per case; CSV to $OUT/bench_window.csv.
 #   bench_window.sh PORELAB SOURCE_DIR OUT_DIR [seconds per case, default 8]
 set -u
 P=$1; SRC=$2; OUT=$3; SECS=${4:-8}
@@ -29,6 +29,6 @@ for N in 10000 50000; do
     line=$(grep "frames in" "$OUT/view_${N}_$mode.log")
     frames=$(echo "$line" | sed 's/.*: \([0-9]*\) frames in \([0-9.]*\) s (mean \([0-9.]*\).*/\1,\2,\3/')
     echo "$N grains, $mode: $line"
-    echo "$N,$mode,${PORELAB_WINDOW_SAMPLES:-4},$frames" >>"$OUT/bench_window.csv"
+    echo "$N,$mode,${PORELAB_WINDOW_SAMPLES:-1},$frames" >>"$OUT/bench_window.csv"
   done
 done

@@ -169,6 +169,11 @@ pl_cli_test(bad_shake_frequency RC 1 ARGS run ${PL_BAD}/bad_shake.lua --quiet
 
 # Packing helpers: fill to a porosity and a count, size distributions, servo compression.
 pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --out ${PL_CLI_OUT}/packing)
+# Scene parameters in the result table (the live window's sliders): accepted and checked.
+pl_cli_test(scene_params RC 0 ARGS run tests/cli/lua/params.lua --quiet --out ${PL_CLI_OUT}/params
+  EXPECT_FILE ${PL_CLI_OUT}/params/frame_000001.png)
+pl_cli_test(bad_params RC 1 ARGS run ${PL_BAD}/bad_params.lua --quiet --out ${PL_CLI_OUT}/bad_params
+  MATCH "^porelab: tests/cli/bad/bad_params.lua: params\\[2\\] \\(friction\\): max must be > min \\(got min 0.9, max 0.1\\)\n$")
 
 # A still replays the run's on_frame hooks, so it equals the run's frame at the same time.
 add_test(NAME cli_still_matches_run COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>

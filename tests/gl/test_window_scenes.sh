@@ -1,8 +1,11 @@
 #!/bin/sh
 # Every scene in scenes/ opens in the live window under Xvfb, runs two scene frames, and its
 # state (state hash) and screenshot equal those of `porelab run --renderer gl --steps K` at the
-# same step (same frame plan, same on_frame hook calls; the last frame, PSNR >= 40 dB). Imperative scripts (no world to show) are skipped, and
-# so are scenes that fail headless too (their own tests report those).
+# same step (same frame plan, same on_frame hook calls; the last frame, PSNR >= 40 dB). Then
+# it rewinds one frame (from a snapshot, or by a replay from the start for scenes with a
+# fluid or an on_frame hook) and steps again: same state hash and identical screenshot.
+# Imperative scripts (no world to show) are skipped, and so are scenes that fail headless
+# too (their own tests report those).
 #   test_window_scenes.sh PORELAB GL_PSNR SOURCE_DIR OUT_DIR
 set -u
 unset PORELAB_GL_SAMPLES PORELAB_WINDOW_SAMPLES # the goldens and thresholds are for the defaults
@@ -27,19 +30,33 @@ for sc in scenes/*.lua scenes/*/*.lua; do
   fi
   "$P" view "$sc" --paused --size 480x360 --out "$OUT/v_$name" >"$OUT/$name.log" 2>&1 &
   VPID=$!
-  W=$(timeout 30 xdotool search --sync --name "porelab - $sc" | head -1)
+  # the window, or the program's exit (an imperative script has no world to show)
+  W=""; i=0
+  while [ $i -lt 300 ]; do
+    W=$(xdotool search --name "porelab - $sc" 2>/dev/null | head -1)
+    [ -n "$W" ] && break
+    kill -0 "$VPID" 2>/dev/null || break
+    sleep 0.1; i=$((i + 1))
+  done
   if [ -z "$W" ]; then
     if grep -q "imperative script" "$OUT/$name.log"; then
-      echo "skip  $sc (imperative script)"; skipped=$((skipped + 1)); VPID=""; continue
+      wait "$VPID"; echo "skip  $sc (imperative script)"; skipped=$((skipped + 1)); VPID=""; continue
     fi
     echo "FAIL  $sc: no window: $(tail -1 "$OUT/$name.log")"; bad=$((bad + 1)); VPID=""; continue
   fi
-  xdotool key --window "$W" --delay 80 s s p
-  i=0; while ! grep -q '^screenshot:' "$OUT/$name.log" && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+  xdotool key --window "$W" --delay 80 s s p Left s p
+  i=0; while [ "$(grep -c '^screenshot:' "$OUT/$name.log")" -lt 2 ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
   xdotool key --window "$W" q
   wait $VPID; VPID=""
-  line=$(grep '^screenshot:' "$OUT/$name.log")
-  if [ -z "$line" ]; then echo "FAIL  $sc: no screenshot"; bad=$((bad + 1)); continue; fi
+  line=$(grep '^screenshot:' "$OUT/$name.log" | head -1)
+  line2=$(grep '^screenshot:' "$OUT/$name.log" | sed -n 2p)
+  if [ -z "$line2" ]; then echo "FAIL  $sc: no screenshot"; bad=$((bad + 1)); continue; fi
+  H2=$(echo "$line2" | sed 's/.*state-hash \([0-9a-f]*\)).*/\1/')
+  from=$(sed -n 's/^rewind: .*replayed from \(.*\) in .*/\1/p' "$OUT/$name.log")
+  if [ "$(echo "$line" | sed 's/.*(t = //')" != "$(echo "$line2" | sed 's/.*(t = //')" ] || \
+     ! "$PSNR" "$OUT/v_$name/screenshot_000.png" "$OUT/v_$name/screenshot_001.png" 200 >/dev/null; then
+    echo "FAIL  $sc: rewinding one frame (from $from) and stepping again differs ($H2)"; bad=$((bad + 1)); continue
+  fi
   T=$(echo "$line" | sed 's/.*(t = \([^ ]*\) s.*/\1/')
   K=$(echo "$line" | sed 's/.*step \([0-9]*\),.*/\1/')
   H=$(echo "$line" | sed 's/.*state-hash \([0-9a-f]*\)).*/\1/')
@@ -55,7 +72,7 @@ for sc in scenes/*.lua scenes/*/*.lua; do
   last=$(ls "$OUT/r_$name"/frame_*.png | tail -1)
   if p=$("$PSNR" "$OUT/v_$name/screenshot_000.png" "$last" 40); then
     hs="state hash = run's"; grep -q "on_frame" "$sc" && hs="on_frame scene"
-    echo "ok    $sc  t = $T s, $hs, window screenshot vs run's frame $p dB"; ok=$((ok + 1))
+    echo "ok    $sc  t = $T s, $hs, window screenshot vs run's frame $p dB; rewound from $from"; ok=$((ok + 1))
   else
     echo "FAIL  $sc  t = $T s, window screenshot vs headless $p dB"; bad=$((bad + 1))
   fi

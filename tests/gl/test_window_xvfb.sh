@@ -9,7 +9,10 @@
 #  4. a scene parameter (up arrow on the selected parameter) changes what happens;
 #  5. dragging a grain on the spring changes what happens; a right click fixes it in place;
 #  6. the scene file is watched: a syntax error is reported and the previous scene stays,
-#     fixing the file reloads it.
+#     fixing the file reloads it;
+#  7. the other keys: space plays and pauses, +/- change the steps per frame, layer keys,
+#     colouring (c), fluid field (f), colour range ([ ]), a drag on empty space pans and z
+#     restores, the help (h) is drawn in the window, r restarts at t = 0 (= headless).
 #   test_window_xvfb.sh PORELAB GL_PSNR GL_XCAPTURE SOURCE_DIR OUT_DIR
 set -u
 unset PORELAB_GL_SAMPLES PORELAB_WINDOW_SAMPLES # the goldens and thresholds are for the defaults
@@ -146,6 +149,52 @@ cp "$SRC/scenes/lab/buoyancy.lua" "$OUT/scene.lua"
 i=0; while ! grep -q '^reload: ok' "$OUT/view.log" && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 grep -q '^reload: ok' "$OUT/view.log" || fail "fixing the file did not reload it"
 echo "file watch: syntax error reported, previous scene kept ($p8 dB), fix reloaded"
+
+# 7. the other keys (the scene just reloaded, paused)
+differs() { # screenshot numbers a b: fail unless they differ
+  if q=$("$PSNR" "$OUT/v/screenshot_$(printf %03d "$1").png" "$OUT/v/screenshot_$(printf %03d "$2").png" 60); then
+    fail "$3 changed nothing ($q dB)"; fi
+}
+# one step per frame first (- halves the steps per frame), so that playing for a moment
+# cannot reach the scene's end time (the window pauses there by itself)
+key minus minus minus minus minus minus minus minus minus
+key s p
+wait_shots 12
+T0=$(shot_time 12)
+key space; sleep 0.5; key space p
+wait_shots 13
+T1=$(shot_time 13)
+awk -v a="$T0" -v b="$T1" 'BEGIN { exit !(b > a) }' || fail "space did not play (t = $T0 -> $T1 s)"
+key plus plus minus
+i=0; while [ "$(grep -c '^speed:' "$OUT/view.log")" -lt 12 ] && [ $i -lt 30 ]; do sleep 0.1; i=$((i + 1)); done
+sp() { grep '^speed:' "$OUT/view.log" | sed -n "$1p" | awk '{print $2}'; }
+[ "$(sp 9)" = 1 ] || fail "- did not slow down to 1 step per frame ($(sp 9))"
+[ "$(sp 10)" = 2 ] && [ "$(sp 11)" = 4 ] && [ "$(sp 12)" = 2 ] || \
+  fail "+ + - did not give 2, 4, 2 steps per frame ($(sp 10), $(sp 11), $(sp 12))"
+key 3 p; wait_shots 14; differs 13 14 "the pressure layer key (3)"; key 3
+key c p; wait_shots 15; differs 13 15 "colouring by speed (c)"; key c c
+key f p; wait_shots 16; differs 13 16 "the fluid field key (f)"; key f f
+key bracketleft bracketleft p; wait_shots 17; differs 13 17 "a narrower colour range ([)"; key a
+xdotool mousemove --window "$W" 30 30 mousedown 1
+sleep 0.2
+xdotool mousemove --window "$W" 90 70
+sleep 0.2
+xdotool mouseup 1
+key p; wait_shots 18; differs 13 18 "dragging empty space (pan)"
+key z p; wait_shots 19
+q=$("$PSNR" "$OUT/v/screenshot_012.png" "$OUT/v/screenshot_018.png" 200) || fail "z after the pan did not restore the view ($q dB)"
+key i; sleep 0.4
+"$CAP" "$W" "$OUT/window_hud.png" || fail "capture"
+key h; sleep 0.4
+"$CAP" "$W" "$OUT/window_help.png" || fail "capture"
+key h i
+if q=$("$PSNR" "$OUT/window_hud.png" "$OUT/window_help.png" 60); then fail "h drew no help ($q dB)"; fi
+key r p; wait_shots 20
+[ "$(shot_time 20)" = 0 ] || fail "r did not restart at t = 0 ($(shot_time 20) s)"
+"$P" still "$OUT/scene.lua" --at 0 --size 640x480 -o "$OUT/headless_0.png" --renderer gl \
+  --out "$OUT/h" -q || fail "headless still at 0"
+q=$("$PSNR" "$OUT/v/screenshot_019.png" "$OUT/headless_0.png" 40) || fail "restart vs headless at 0 ($q dB)"
+echo "keys: space played t = $T0 -> $T1 s; - and + halve and double the steps per frame; 3, c, f, [ change the picture; pan and z; help drawn; r restarts ($q dB vs headless)"
 
 key q
 i=0; while kill -0 "$VPID" 2>/dev/null && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
