@@ -125,6 +125,22 @@ static int draw_triangles_raster(cairo_t *cr, const pl_draw_list *dl, const pl_p
         return 0;
     }
     int w = ix1 - ix0, h = iy1 - iy0;
+    /* opaque colours and a clip on whole pixels: compositing the image would replace the
+     * painted pixels, so paint them straight into the target */
+    int opaque = 1;
+    for (int i = 0; i < 3 * nt && opaque; i++) opaque = dl->colors[p->color_first + i].a >= 1.0f;
+    cairo_surface_t *target = cairo_get_target(cr);
+    if (opaque && cx0 == floor(cx0) && cy0 == floor(cy0) && cx1 == floor(cx1) &&
+        cy1 == floor(cy1) && cairo_image_surface_get_format(target) == CAIRO_FORMAT_ARGB32) {
+        cairo_surface_flush(target);
+        int stride = cairo_image_surface_get_stride(target);
+        uint8_t *data = cairo_image_surface_get_data(target);
+        pl_raster_gouraud(data + (size_t)iy0 * (size_t)stride + 4u * (size_t)ix0, w, h, stride,
+                          ix0, iy0, px, dl->colors + p->color_first, nt);
+        cairo_surface_mark_dirty(target);
+        free(px);
+        return 0;
+    }
     cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
     if (cairo_surface_status(img) != CAIRO_STATUS_SUCCESS) {
         cairo_surface_destroy(img);
@@ -254,7 +270,9 @@ static void draw_text(cairo_t *cr, const pl_draw_list *dl, const pl_prim *p) {
 
 /* On image surfaces, bodies, segments, lines and arrows are rasterized by raster_aa.c
  * straight into the surface's pixels (cairo's per-path cost dominates pictures of thousands
- * of small primitives); text, Gouraud fields and everything on SVG/PDF stay with cairo. */
+ * of small primitives; Gouraud fields: draw_triangles_raster); text and everything on
+ * SVG/PDF stay with cairo. The pictures differ from cairo's by the measured amounts of
+ * docs/rendering.md (Performance). */
 typedef struct direct_ctx {
     pl_aa *aa;
     cairo_surface_t *target;
@@ -262,7 +280,22 @@ typedef struct direct_ctx {
     int stride;
     int writing;  /* pixels written since the last flush: mark dirty before cairo draws */
     int failed;   /* out of memory in raster_aa.c: the picture is incomplete */
+    int open;     /* a batch of one colour is being collected (segments, arrows) */
+    int open_clipped, open_sum;
+    pl_rgba open_color;
 } direct_ctx;
+
+static void direct_fill(direct_ctx *d, pl_rgba color) {
+    if (pl_aa_fill(d->aa, d->data, d->stride, color)) d->failed = 1;
+}
+
+/* composites the open batch, if any */
+static void direct_flush(direct_ctx *d) {
+    if (d->open) {
+        d->open = 0;
+        direct_fill(d, d->open_color);
+    }
+}
 
 static void direct_begin(direct_ctx *d) {
     if (!d->writing) {
@@ -272,6 +305,7 @@ static void direct_begin(direct_ctx *d) {
 }
 
 static void direct_end(direct_ctx *d) {
+    if (d->aa) direct_flush(d);
     if (d->aa && d->writing) {
         cairo_surface_mark_dirty(d->target);
         d->writing = 0;
@@ -279,14 +313,11 @@ static void direct_end(direct_ctx *d) {
 }
 
 static void direct_batch(direct_ctx *d, const pl_draw_list *dl, int clipped) {
+    direct_flush(d);
     if (clipped)
         pl_aa_begin(d->aa, dl->clip.x0, dl->clip.y0, dl->clip.x1, dl->clip.y1);
     else
         pl_aa_begin(d->aa, 0.0, 0.0, 1e9, 1e9);
-}
-
-static void direct_fill(direct_ctx *d, pl_rgba color) {
-    if (pl_aa_fill(d->aa, d->data, d->stride, color)) d->failed = 1;
 }
 
 /* a batch of one shape: composited as it is rasterized */
@@ -295,15 +326,40 @@ static void direct_single(direct_ctx *d, const pl_draw_list *dl, int clipped, pl
     pl_aa_immediate(d->aa, d->data, d->stride, color);
 }
 
+/* Continues the open batch when it has this colour and clip, else starts one. Consecutive
+ * primitives of one colour (the segment batches of a force class or of a mesh, the arrows of
+ * a layer) are collected into one batch: where they overlap, the union (per-pixel maximum) is
+ * composited once. */
+static void direct_open(direct_ctx *d, const pl_draw_list *dl, int clipped, pl_rgba color,
+                        int sum) {
+    direct_begin(d);
+    if (d->open && d->open_clipped == clipped && d->open_sum == sum &&
+        memcmp(&d->open_color, &color, sizeof color) == 0)
+        return;
+    direct_batch(d, dl, clipped);
+    if (sum) {
+        if (clipped) pl_aa_begin_sum(d->aa, dl->clip.x0, dl->clip.y0, dl->clip.x1, dl->clip.y1);
+        else pl_aa_begin_sum(d->aa, 0.0, 0.0, 1e9, 1e9);
+    } else {
+        pl_aa_incremental(d->aa, d->data, d->stride, color);
+    }
+    d->open_sum = sum;
+    d->open = 1;
+    d->open_clipped = clipped;
+    d->open_color = color;
+}
+
 /* Largest size (px) of a body or mark drawn directly, and longest segment of a batch:
  * thousands of small primitives are where cairo's per-path cost dominates; large ones (few,
  * by nature) stay with cairo. */
 #define DIRECT_MAX_PX 24.0
 
-#define DIRECT_MIN_WIDTH 2.0
+/* Longest segment (px, in x and in y) of a batch drawn directly; longer ones (few: zoomed-in
+ * meshes) go to cairo. */
+#define SEGMENT_MAX_PX 256.0
 
 static int seg_is_direct(pl_vec2 a, pl_vec2 b) {
-    return fabs(b.x - a.x) <= DIRECT_MAX_PX && fabs(b.y - a.y) <= DIRECT_MAX_PX;
+    return fabs(b.x - a.x) <= SEGMENT_MAX_PX && fabs(b.y - a.y) <= SEGMENT_MAX_PX;
 }
 
 /* Extent of a primitive's points in pixels (largest of width and height). */
@@ -370,21 +426,18 @@ static int direct_draw(direct_ctx *d, const pl_draw_list *dl, const pl_prim *p, 
     }
     case PL_PRIM_SEGMENTS: { /* short segments here; long ones (if any) then by cairo */
         const pl_vec2 *pts = dl->points + p->first;
-        /* Thin lines (mesh wireframes, weak forces) stay with cairo: where several meet at a
-         * node, the union of their partial pixels is more than the coverage of any one (the
-         * maximum taken here) and less than their sum; only a rasterizer of the whole batch
-         * as one path gets it right (measured: either way the bench mesh differs from
-         * cairo's in 2-4 % of the pixels). */
-        if (p->width < DIRECT_MIN_WIDTH) return 0;
+        /* Segment batches (force classes, mesh wireframes) by their distance coverage
+         * (pl_aa_thin_segment): consecutive batches of one colour form one batch, whose
+         * per-pixel maximum is the coverage by the distance to the union of its segments, so
+         * lines meeting at a node join without gaps and without doubly blended pixels (cairo
+         * forms the exact area of the union of each path: a little darker at nodes). */
         int long_ones = 0;
-        direct_begin(d);
-        direct_batch(d, dl, clipped);
+        direct_open(d, dl, clipped, p->stroke, 0);
         for (int k = 0; k + 1 < p->count; k += 2) {
             pl_vec2 a = pl_dl_px(dl, p, pts[k]), b = pl_dl_px(dl, p, pts[k + 1]);
-            if (seg_is_direct(a, b)) pl_aa_capsule(d->aa, a, b, p->width);
+            if (seg_is_direct(a, b)) pl_aa_thin_segment(d->aa, a, b, p->width);
             else long_ones = 1;
         }
-        direct_fill(d, p->stroke);
         return !long_ones;
     }
     default:
@@ -403,10 +456,16 @@ static int direct_arrow(direct_ctx *d, const pl_draw_list *dl, const pl_prim *p,
         fabs(g.tip.y - g.a.y) > 2.0 * DIRECT_MAX_PX)
         return 0;
     direct_begin(d);
+    pl_vec2 t[3] = {g.tip, g.left, g.right};
+    if (memcmp(&p->stroke, &p->fill, sizeof p->fill) == 0) {
+        /* one colour: shaft and head as one shape, the arrows of a layer in one batch */
+        direct_open(d, dl, clipped, p->fill, 1);
+        pl_aa_arrow(d->aa, g.a, g.shaft_end, p->width, t);
+        return 1;
+    }
     direct_single(d, dl, clipped, p->stroke);
     pl_aa_bar(d->aa, g.a, g.shaft_end, p->width);
     direct_fill(d, p->stroke);
-    pl_vec2 t[3] = {g.tip, g.left, g.right};
     direct_single(d, dl, clipped, p->fill);
     pl_aa_polygon(d->aa, t, 3);
     direct_fill(d, p->fill);
@@ -444,7 +503,8 @@ int pl_cairo_draw(cairo_t *cr, const pl_draw_list *dl, char *err, size_t errlen)
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
     const double two_pi = 6.283185307179586;
     int clipped = 0;
-    direct_ctx d = {NULL, NULL, NULL, 0, 0, 0};
+    direct_ctx d;
+    memset(&d, 0, sizeof d);
     /* our own rasterizers on image surfaces; PORELAB_CAIRO_ONLY=1 leaves everything to cairo
      * (for comparisons: tests/bench/bench_render.c) */
     int own = raster_target(cr) && !getenv("PORELAB_CAIRO_ONLY");
@@ -498,7 +558,7 @@ int pl_cairo_draw(cairo_t *cr, const pl_draw_list *dl, char *err, size_t errlen)
             const pl_vec2 *pts = dl->points + p->first;
             for (int k = 0; k + 1 < p->count; k += 2) {
                 pl_vec2 a = pl_dl_px(dl, p, pts[k]), b = pl_dl_px(dl, p, pts[k + 1]);
-                if (d.aa && p->width >= DIRECT_MIN_WIDTH && seg_is_direct(a, b))
+                if (d.aa && seg_is_direct(a, b))
                     continue; /* drawn directly above */
                 cairo_move_to(cr, a.x, a.y);
                 cairo_line_to(cr, b.x, b.y);
@@ -573,6 +633,11 @@ int pl_cairo_rasterize(const pl_draw_list *dl, pl_image *img, char *err, size_t 
             uint8_t *out = img->rgba + (size_t)y * (size_t)w * 4u;
             for (int x = 0; x < w; x++) {
                 uint32_t v = row[x];
+                if (v >> 24 == 255u) { /* opaque: only the byte order changes */
+                    uint32_t o = (v & 0xFF00FF00u) | (v >> 16 & 0xFFu) | (v & 0xFFu) << 16;
+                    memcpy(out + 4 * x, &o, 4);
+                    continue;
+                }
                 unsigned a = v >> 24, r = (v >> 16) & 255u, g = (v >> 8) & 255u, b = v & 255u;
                 if (a != 255u && a != 0u) { /* un-premultiply with rounding */
                     r = (r * 255u + a / 2u) / a;

@@ -70,7 +70,7 @@ int pl_draw_mesh_wire(pl_draw_list *dl, const pl_vec2 *nodes, const int *tris, i
             if (a > b) { uint32_t s = a; a = b; b = s; }
             keys[n++] = ((uint64_t)a << 32) | b;
         }
-    qsort(keys, (size_t)n, sizeof *keys, cmp_u64);
+    if (pl_radix_sort_u64(keys, NULL, n)) qsort(keys, (size_t)n, sizeof *keys, cmp_u64);
     pl_dl_segments_begin(dl, PL_SPACE_WORLD, color, width);
     for (int i = 0; i < n; i++) {
         if (i > 0 && keys[i] == keys[i - 1]) continue;

@@ -270,7 +270,27 @@ double pl_draw_force_chains(pl_draw_list *dl, const pl_render_scene *s,
             n++;
         }
     }
-    qsort(order, (size_t)n, sizeof *order, cmp_force);
+    /* by force, then contact index: the bits of a positive double order as the double, and
+     * the stable radix sort keeps the index order of equal forces */
+    uint64_t *keys = malloc((size_t)(n > 0 ? n : 1) * sizeof *keys);
+    int32_t *idx = malloc((size_t)(n > 0 ? n : 1) * sizeof *idx);
+    int sorted = 0;
+    if (keys && idx) {
+        for (int i = 0; i < n; i++) {
+            memcpy(&keys[i], &order[i].fn, sizeof keys[i]);
+            idx[i] = order[i].index;
+        }
+        if (pl_radix_sort_u64(keys, idx, n) == 0) {
+            for (int i = 0; i < n; i++) {
+                memcpy(&order[i].fn, &keys[i], sizeof keys[i]);
+                order[i].index = idx[i];
+            }
+            sorted = 1;
+        }
+    }
+    free(keys);
+    free(idx);
+    if (!sorted) qsort(order, (size_t)n, sizeof *order, cmp_force);
     pl_rgba strong = opt->force_color;
     pl_rgba weak = pl_rgba_mix(strong, pl_rgb(1, 1, 1), 0.6);
     double wmax = opt->force_max_width > 0.0 ? opt->force_max_width : 6.0;

@@ -299,3 +299,44 @@ pl_rgba pl_rgba_scale(pl_rgba a, double f) {
     pl_rgba c = {(float)(a.r * f), (float)(a.g * f), (float)(a.b * f), a.a};
     return c;
 }
+
+/* ----------------------------------------------------------------- sorting */
+
+int pl_radix_sort_u64(uint64_t *keys, int32_t *vals, int n) {
+    if (n < 2) return 0;
+    uint64_t *tk = malloc((size_t)n * sizeof *tk);
+    int32_t *tv = vals ? malloc((size_t)n * sizeof *tv) : NULL;
+    if (!tk || (vals && !tv)) {
+        free(tk);
+        free(tv);
+        return -1;
+    }
+    uint64_t *k0 = keys, *k1 = tk;
+    int32_t *v0 = vals, *v1 = tv;
+    uint64_t all_or = 0, all_and = ~(uint64_t)0;
+    for (int i = 0; i < n; i++) {
+        all_or |= keys[i];
+        all_and &= keys[i];
+    }
+    uint64_t varying = all_or ^ all_and; /* bits that differ between some keys */
+    for (int shift = 0; shift < 64; shift += 8) {
+        if (!((varying >> shift) & 0xFFu)) continue;
+        int count[257] = {0};
+        for (int i = 0; i < n; i++) count[((k0[i] >> shift) & 0xFFu) + 1]++;
+        for (int b = 0; b < 256; b++) count[b + 1] += count[b];
+        for (int i = 0; i < n; i++) {
+            int d = count[(k0[i] >> shift) & 0xFFu]++;
+            k1[d] = k0[i];
+            if (v0) v1[d] = v0[i];
+        }
+        uint64_t *t = k0; k0 = k1; k1 = t;
+        int32_t *u = v0; v0 = v1; v1 = u;
+    }
+    if (k0 != keys) {
+        memcpy(keys, k0, (size_t)n * sizeof *keys);
+        if (vals) memcpy(vals, v0, (size_t)n * sizeof *vals);
+    }
+    free(tk);
+    free(tv);
+    return 0;
+}

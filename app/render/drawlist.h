@@ -135,12 +135,23 @@ void pl_dl_text(pl_draw_list *dl, pl_space sp, pl_vec2 at, const char *s, float 
 
 /// Position of a primitive point in pixels (applies the camera to world-space points).
 static inline pl_vec2 pl_dl_px(const pl_draw_list *dl, const pl_prim *p, pl_vec2 q) {
-    return p->space == PL_SPACE_WORLD ? pl_camera_to_px(&dl->camera, q) : q;
+    if (p->space != PL_SPACE_WORLD) return q;
+    const pl_camera *cam = &dl->camera; /* pl_camera_to_px, inline */
+    pl_vec2 r = {(q.x - cam->center.x) * cam->scale + cam->px_center.x,
+                 cam->px_center.y - (q.y - cam->center.y) * cam->scale};
+    return r;
 }
 /// Radius of a circle primitive in pixels.
 static inline double pl_dl_px_radius(const pl_draw_list *dl, const pl_prim *p) {
     return p->space == PL_SPACE_WORLD ? p->radius * dl->camera.scale : p->radius;
 }
+
+/* ----------------------------------------------------------------- sorting */
+
+/// Sorts keys ascending, stably (LSD radix, 8 bits a pass; passes where every key has the same
+/// byte are skipped), carrying vals along when not NULL. Returns -1 when out of memory
+/// (arrays unchanged). Used by the builders for their large sorts (forces, mesh edges).
+int pl_radix_sort_u64(uint64_t *keys, int32_t *vals, int n);
 
 /* ----------------------------------------------------------------- colours */
 

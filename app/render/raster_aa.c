@@ -32,7 +32,7 @@ typedef struct aa_rect {
 
 struct pl_aa {
     int w, h;
-    float *batch;            /* w * h coverage of the current batch (0 outside shapes) */
+    uint8_t *batch;          /* w * h coverage of the current batch, 0..255 (0 outside shapes) */
     float *acc;              /* accumulation buffer of one shape */
     size_t acc_cap;
     pl_vec2 *pts;            /* outline points of the shape being built */
@@ -47,9 +47,26 @@ struct pl_aa {
     uint32_t *idata;         /* immediate mode: shapes composited as they come */
     int istride;             /* in pixels */
     unsigned sa, sr, sg, sb; /* colour, premultiplied 8-bit */
+    uint32_t src;            /* the same as a premultiplied ARGB32 pixel */
     int pen_n;               /* cos/sin of 2 pi i / pen_n: the pen of round caps and joins */
     double *pcos, *psin;
     int failed;
+    /* sum batches: every shape's edges go into one accumulation buffer over the image
+     * ((w + 2) x h, zero between batches), composited by one running sum per row */
+    int sum;
+    float *facc;
+    int *frlo, *frhi;        /* per image row: first and past-last column deposited */
+    /* segment coverage by distance, tabulated for the last width (see seg_lut) */
+    double lut_hw;
+    int lut_n;
+    uint8_t *lut;
+    uint8_t lut_ok[16];
+    int incr;                /* incremental batch (see pl_aa_incremental) */
+    struct {                 /* flattened unit circles, by arcs per half turn and depth */
+        int segs, depth, n;
+        pl_vec2 *pts;
+    } circ[8];
+    int ncirc;
 };
 
 pl_aa *pl_aa_create(int width, int height) {
@@ -77,6 +94,11 @@ void pl_aa_destroy(pl_aa *aa) {
     free(aa->rects);
     free(aa->pcos);
     free(aa->psin);
+    free(aa->facc);
+    free(aa->lut);
+    for (int i = 0; i < aa->ncirc; i++) free(aa->circ[i].pts);
+    free(aa->frlo);
+    free(aa->frhi);
     free(aa);
 }
 
@@ -88,6 +110,31 @@ void pl_aa_begin(pl_aa *aa, double x0, double y0, double x1, double y1) {
     aa->nrects = 0;
     aa->npts = aa->ncont = 0;
     aa->idata = NULL;
+    aa->sum = 0;
+    aa->incr = 0;
+}
+
+int pl_aa_begin_sum(pl_aa *aa, double x0, double y0, double x1, double y1) {
+    pl_aa_begin(aa, x0, y0, x1, y1);
+    if (!aa->facc) {
+        aa->facc = calloc((size_t)(aa->w + 2) * (size_t)aa->h, sizeof *aa->facc);
+        aa->frlo = malloc((size_t)aa->h * sizeof *aa->frlo);
+        aa->frhi = malloc((size_t)aa->h * sizeof *aa->frhi);
+        if (!aa->facc || !aa->frlo || !aa->frhi) {
+            free(aa->facc);
+            free(aa->frlo);
+            free(aa->frhi);
+            aa->facc = NULL;
+            aa->frlo = aa->frhi = NULL;
+            return -1;
+        }
+        for (int y = 0; y < aa->h; y++) {
+            aa->frlo[y] = aa->w + 2;
+            aa->frhi[y] = 0;
+        }
+    }
+    aa->sum = 1;
+    return 0;
 }
 
 static void set_color(pl_aa *aa, pl_rgba color) {
@@ -96,6 +143,7 @@ static void set_color(pl_aa *aa, pl_rgba color) {
     aa->sr = (unsigned)(color.r * a * 255.0f + 0.5f);
     aa->sg = (unsigned)(color.g * a * 255.0f + 0.5f);
     aa->sb = (unsigned)(color.b * a * 255.0f + 0.5f);
+    aa->src = (uint32_t)aa->sa << 24 | aa->sr << 16 | aa->sg << 8 | aa->sb;
 }
 
 void pl_aa_immediate(pl_aa *aa, uint8_t *data, int stride, pl_rgba color) {
@@ -104,23 +152,56 @@ void pl_aa_immediate(pl_aa *aa, uint8_t *data, int stride, pl_rgba color) {
     set_color(aa, color);
 }
 
+void pl_aa_incremental(pl_aa *aa, uint8_t *data, int stride, pl_rgba color) {
+    pl_aa_immediate(aa, data, stride, color);
+    aa->incr = 1;
+}
+
+/* the coverage that, composited over a pixel already composited with coverage m0 of the same
+ * colour, makes it composited with m > m0: 1 - (1 - m0)(1 - x) = m */
+static inline unsigned incr_cov(unsigned m0, unsigned m) {
+    if (!m0) return m;
+    return ((m - m0) * 255u + (255u - m0) / 2u) / (255u - m0);
+}
+
 static inline unsigned mul_un8(unsigned a, unsigned b) {
     unsigned t = a * b + 128u;
     return ((t >> 8) + t) >> 8;
 }
 
 /* OVER of the colour with coverage c (0..1] onto a premultiplied ARGB32 pixel */
-static inline uint32_t blend(const pl_aa *aa, uint32_t d, float c) {
-    unsigned m = (unsigned)(c * 255.0f + 0.5f);
+static inline unsigned cov8(float c) { return (unsigned)(c * 255.0f + 0.5f); }
+
+/* x * a / 255 rounded, on the four 8-bit channels of x at once (pixman's UN8x4_MUL_UN8: the
+ * same rounding as mul_un8 per channel) */
+static inline uint32_t mul4_un8(uint32_t x, unsigned a) {
+    uint32_t rb = (x & 0x00FF00FFu) * a + 0x00800080u;
+    rb = ((rb + ((rb >> 8) & 0x00FF00FFu)) >> 8) & 0x00FF00FFu;
+    uint32_t ag = ((x >> 8) & 0x00FF00FFu) * a + 0x00800080u;
+    ag = ((ag + ((ag >> 8) & 0x00FF00FFu)) >> 8) & 0x00FF00FFu;
+    return rb | ag << 8;
+}
+
+/* channel-wise saturating x + y (pixman's UN8x4_ADD_UN8x4) */
+static inline uint32_t add4_un8(uint32_t x, uint32_t y) {
+    uint32_t rb = (x & 0x00FF00FFu) + (y & 0x00FF00FFu);
+    rb = (rb | (0x10000100u - ((rb >> 8) & 0x00FF00FFu))) & 0x00FF00FFu;
+    uint32_t ag = ((x >> 8) & 0x00FF00FFu) + ((y >> 8) & 0x00FF00FFu);
+    ag = (ag | (0x10000100u - ((ag >> 8) & 0x00FF00FFu))) & 0x00FF00FFu;
+    return rb | ag << 8;
+}
+
+/* OVER of the colour with 8-bit coverage m onto a premultiplied ARGB32 pixel */
+static inline __attribute__((always_inline)) uint32_t blend8(const pl_aa *aa, uint32_t d,
+                                                             unsigned m) {
     if (m == 0) return d;
-    unsigned ma = mul_un8(aa->sa, m), inv = 255u - ma;
-    unsigned da = d >> 24, dr = (d >> 16) & 255u, dg = (d >> 8) & 255u, db = d & 255u;
-    da = ma + mul_un8(da, inv);
-    dr = mul_un8(aa->sr, m) + mul_un8(dr, inv);
-    dg = mul_un8(aa->sg, m) + mul_un8(dg, inv);
-    db = mul_un8(aa->sb, m) + mul_un8(db, inv);
-    return (uint32_t)(da > 255u ? 255u : da) << 24 | (dr > 255u ? 255u : dr) << 16 |
-           (dg > 255u ? 255u : dg) << 8 | (db > 255u ? 255u : db);
+    if (m == 255u && aa->sa == 255u) return aa->src; /* opaque: the colour itself */
+    unsigned inv = 255u - mul_un8(aa->sa, m);
+    return add4_un8(mul4_un8(aa->src, m), mul4_un8(d, inv));
+}
+
+static inline __attribute__((always_inline)) uint32_t blend(const pl_aa *aa, uint32_t d, float c) {
+    return blend8(aa, d, cov8(c));
 }
 
 static int convex_outline(pl_aa *aa, const pl_vec2 *p, int n, double w, int add);
@@ -176,6 +257,7 @@ static void acc_edge(float *acc, int bw, int bh, int *lo, int *hi, double x0, do
         dir = -1.0;
     }
     double dxdy = (x1 - x0) / (y1 - y0);
+    double ady_dx = dxdy != 0.0 ? 1.0 / fabs(dxdy) : 0.0; /* |dy/dx| */
     int r0 = ifloor(y0), r1 = iceil(y1);
     if (r0 < 0) r0 = 0;
     if (r1 > bh) r1 = bh;
@@ -189,13 +271,15 @@ static void acc_edge(float *acc, int bw, int bh, int *lo, int *hi, double x0, do
         float *row = acc + (size_t)r * (size_t)bw;
         int il = ifloor(xl), ir = iceil(xr);
         if (il < lo[r]) lo[r] = il;
-        if (ir + 1 > hi[r]) hi[r] = ir + 1; /* deposits reach column ir (or il + 1) */
         if (ir <= il + 1) { /* the edge stays within pixel column il */
+            if (il + 2 > hi[r]) hi[r] = il + 2; /* deposits reach column il + 1 */
             double xm = 0.5 * (xa + xb) - il;
             row[il] += (float)(d * (1.0 - xm));
             row[il + 1] += (float)(d * xm);
         } else { /* across columns il .. ir-1: trapezoid areas */
-            double s = 1.0 / (xr - xl);
+            if (ir + 1 > hi[r]) hi[r] = ir + 1; /* deposits reach column ir */
+            /* 1 / (xr - xl), with xr - xl = |dx/dy| dy */
+            double s = dy >= 1.0 ? ady_dx : ady_dx / dy;
             double f0 = xl - il;
             double a0 = 0.5 * s * (1.0 - f0) * (1.0 - f0);
             double f1 = xr - (ir - 1);
@@ -233,6 +317,21 @@ static void shape_end(pl_aa *aa) {
     int px0 = ifloor(dmax(x0, aa->cx0)), px1 = iceil(dmin(x1, aa->cx1));
     int py0 = ifloor(dmax(y0, aa->cy0)), py1 = iceil(dmin(y1, aa->cy1));
     if (px1 <= px0 || py1 <= py0) return;
+    if (aa->sum) { /* deposit into the image-wide buffer; composited by pl_aa_fill */
+        int fbw = aa->w + 2;
+        double xlo = px0, xhi = px1;
+        aa->starts[nc] = np;
+        for (int c = 0; c < nc; c++) {
+            int a = aa->starts[c], b = aa->starts[c + 1];
+            for (int i = a; i < b; i++) {
+                pl_vec2 p = aa->pts[i], q = aa->pts[i + 1 < b ? i + 1 : a];
+                double ax = dmin(dmax(p.x, xlo), xhi), bx = dmin(dmax(q.x, xlo), xhi);
+                acc_edge(aa->facc + (size_t)py0 * (size_t)fbw, fbw, py1 - py0, aa->frlo + py0,
+                         aa->frhi + py0, ax, p.y - py0, bx, q.y - py0);
+            }
+        }
+        return;
+    }
     int bw = px1 - px0 + 2, bh = py1 - py0;
     size_t need = (size_t)bw * (size_t)bh;
     if (need > aa->acc_cap) {
@@ -272,29 +371,54 @@ static void shape_end(pl_aa *aa) {
             acc_edge(aa->acc, bw, bh, aa->rlo, aa->rhi, ax, p.y - py0, bx, q.y - py0);
         }
     }
-    /* clip coverage at fractional clip borders */
+    /* clip coverage at fractional clip borders (pixels outside [in_x0, in_x1) are cut) */
+    int in_x0 = iceil(aa->cx0), in_x1 = ifloor(aa->cx1);
     for (int r = 0; r < bh; r++) {
         int y = py0 + r;
         double fy = dmin(y + 1.0, aa->cy1) - dmax((double)y, aa->cy0);
+        int row_part = fy < 1.0;
         const float *row = aa->acc + (size_t)r * (size_t)bw;
-        float *out = aa->batch + (size_t)y * (size_t)aa->w;
+        uint8_t *out = aa->batch + (size_t)y * (size_t)aa->w;
         uint32_t *px = aa->idata ? aa->idata + (size_t)y * (size_t)aa->istride : NULL;
         float run = 0.0f;
         /* before the first deposit of the row the sum is 0; after the last it is the
          * row's total winding, 0 for closed outlines */
         int i_end = aa->rhi[r] < px1 - px0 ? aa->rhi[r] : px1 - px0;
-        for (int i = aa->rlo[r]; i < i_end; i++) {
+        int i_beg = aa->rlo[r];
+        if (!row_part && px0 + i_beg >= in_x0 && px0 + i_end <= in_x1) {
+            /* the common case: the row inside the clip */
+            if (px) {
+                uint32_t *dst = px + px0;
+                for (int i = i_beg; i < i_end; i++) {
+                    run += row[i];
+                    float cov = fabsf(run);
+                    unsigned m = cov >= 1.0f ? 255u : cov8(cov);
+                    if (m) dst[i] = blend8(aa, dst[i], m);
+                }
+            } else {
+                uint8_t *dst = out + px0;
+                for (int i = i_beg; i < i_end; i++) {
+                    run += row[i];
+                    float cov = fabsf(run);
+                    unsigned m = cov >= 1.0f ? 255u : cov8(cov);
+                    if (m > dst[i]) dst[i] = (uint8_t)m;
+                }
+            }
+            continue;
+        }
+        for (int i = i_beg; i < i_end; i++) {
             run += row[i];
             float cov = fabsf(run);
             if (cov <= 0.0f) continue;
             if (cov > 1.0f) cov = 1.0f;
             int x = px0 + i;
-            if (fy < 1.0 || x < aa->cx0 || x + 1 > aa->cx1) {
+            if (row_part || x < in_x0 || x >= in_x1) {
                 double fx = dmin(x + 1.0, aa->cx1) - dmax((double)x, aa->cx0);
                 cov *= (float)(dmax(0.0, fx) * dmax(0.0, fy));
             }
-            if (px) px[x] = blend(aa, px[x], cov);
-            else if (cov > out[x]) out[x] = cov;
+            unsigned m = cov8(cov);
+            if (px) px[x] = blend8(aa, px[x], m);
+            else if (m > out[x]) out[x] = (uint8_t)m;
         }
     }
     if (aa->idata) return;
@@ -363,21 +487,48 @@ static double spline_error_sq(const fixpt k[4]) {
     return berr > cerr ? berr : cerr;
 }
 
-static inline fixpt half(fixpt a, fixpt b) {
-    return (fixpt){a.x + ((b.x - a.x) >> 1), a.y + ((b.y - a.y) >> 1)};
+/* the same error as spline_error_sq, on control points in double */
+static double spline_error_sq_d(const pl_vec2 k[4]) {
+    fixpt f[4];
+    for (int i = 0; i < 4; i++) f[i] = (fixpt){to_fixed(k[i].x), to_fixed(k[i].y)};
+    return spline_error_sq(f);
 }
 
-/* Emits the start points of the flat pieces of Bezier k (its end point is the next start). */
-static void flatten(pl_aa *aa, fixpt k[4], double tol_sq, int depth) {
-    if (depth > 16 || spline_error_sq(k) < tol_sq) {
-        point(aa, k[0].x / 256.0, k[0].y / 256.0);
-        return;
-    }
-    fixpt ab = half(k[0], k[1]), bc = half(k[1], k[2]), cd = half(k[2], k[3]);
-    fixpt abbc = half(ab, bc), bccd = half(bc, cd), mid = half(abbc, bccd);
-    fixpt s1[4] = {k[0], ab, abbc, mid}, s2[4] = {mid, bccd, cd, k[3]};
-    flatten(aa, s1, tol_sq, depth + 1);
-    flatten(aa, s2, tol_sq, depth + 1);
+/* The points of a circle of radius 1 flattened as cairo flattens one of radius r: segs Bezier
+ * arcs per half turn, each halved depth times (a circular arc's halves are symmetric, so
+ * cairo halves every piece equally often). Cached per (segs, depth); NULL when out of memory. */
+static const pl_vec2 *unit_circle(pl_aa *aa, int segs, int depth, int *n) {
+    for (int i = 0; i < aa->ncirc; i++)
+        if (aa->circ[i].segs == segs && aa->circ[i].depth == depth) {
+            *n = aa->circ[i].n;
+            return aa->circ[i].pts;
+        }
+    int per = 1 << depth, nn = 2 * segs * per;
+    pl_vec2 *pts = malloc((size_t)nn * sizeof *pts);
+    if (!pts) return NULL;
+    double step = M_PI / segs, h = 4.0 / 3.0 * tan(step / 4.0);
+    int m = 0;
+    for (int half_turn = 0; half_turn < 2; half_turn++)
+        for (int k = 0; k < segs; k++) {
+            double a = half_turn * M_PI + k * step, b = a + step;
+            double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b);
+            pl_vec2 p0 = {ca, sa}, p1 = {ca - h * sa, sa + h * ca}, p2 = {cb + h * sb, sb - h * cb},
+                    p3 = {cb, sb};
+            for (int j = 0; j < per; j++) {
+                double t = (double)j / per, u = 1.0 - t;
+                double w0 = u * u * u, w1 = 3.0 * u * u * t, w2 = 3.0 * u * t * t, w3 = t * t * t;
+                pts[m++] = (pl_vec2){w0 * p0.x + w1 * p1.x + w2 * p2.x + w3 * p3.x,
+                                     w0 * p0.y + w1 * p1.y + w2 * p2.y + w3 * p3.y};
+            }
+        }
+    int slot = aa->ncirc < 8 ? aa->ncirc++ : 7;
+    if (slot == 7 && aa->circ[7].pts) free(aa->circ[7].pts);
+    aa->circ[slot].segs = segs;
+    aa->circ[slot].depth = depth;
+    aa->circ[slot].n = nn;
+    aa->circ[slot].pts = pts;
+    *n = nn;
+    return pts;
 }
 
 static void circle_contour(pl_aa *aa, pl_vec2 c, double r, int reverse) {
@@ -386,17 +537,31 @@ static void circle_contour(pl_aa *aa, pl_vec2 c, double r, int reverse) {
     double max_angle = arc_max_angle(TOLERANCE / r);
     int segs = (int)ceil(M_PI / max_angle - 1e-12); /* per half turn */
     double step = M_PI / segs, h = 4.0 / 3.0 * tan(step / 4.0);
-    for (int half_turn = 0; half_turn < 2; half_turn++)
-        for (int k = 0; k < segs; k++) {
-            double a = half_turn * M_PI + k * step, b = a + step;
-            double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b);
-            fixpt kn[4] = {
-                {to_fixed(c.x + r * ca), to_fixed(c.y + r * sa)},
-                {to_fixed(c.x + r * ca - r * h * sa), to_fixed(c.y + r * sa + r * h * ca)},
-                {to_fixed(c.x + r * cb + r * h * sb), to_fixed(c.y + r * sb - r * h * cb)},
-                {to_fixed(c.x + r * cb), to_fixed(c.y + r * sb)}};
-            flatten(aa, kn, TOLERANCE * TOLERANCE, 0);
-        }
+    /* how often cairo halves the first arc (placed at the origin plus the centre's fraction
+     * of a pixel, so that its fixed-point rounding is nearly the same) */
+    double fx = c.x - floor(c.x), fy = c.y - floor(c.y), cb = cos(step), sb = sin(step);
+    pl_vec2 k[4] = {{fx + r, fy}, {fx + r, fy + r * h}, {fx + r * cb + r * h * sb, fy + r * sb - r * h * cb},
+                    {fx + r * cb, fy + r * sb}};
+    int depth = 0;
+    while (depth < 12 && spline_error_sq_d(k) >= TOLERANCE * TOLERANCE) {
+        pl_vec2 ab = {0.5 * (k[0].x + k[1].x), 0.5 * (k[0].y + k[1].y)};
+        pl_vec2 bc = {0.5 * (k[1].x + k[2].x), 0.5 * (k[1].y + k[2].y)};
+        pl_vec2 cd = {0.5 * (k[2].x + k[3].x), 0.5 * (k[2].y + k[3].y)};
+        pl_vec2 abbc = {0.5 * (ab.x + bc.x), 0.5 * (ab.y + bc.y)};
+        pl_vec2 bccd = {0.5 * (bc.x + cd.x), 0.5 * (bc.y + cd.y)};
+        pl_vec2 mid = {0.5 * (abbc.x + bccd.x), 0.5 * (abbc.y + bccd.y)};
+        k[1] = ab;
+        k[2] = abbc;
+        k[3] = mid;
+        depth++;
+    }
+    int n = 0;
+    const pl_vec2 *u = unit_circle(aa, segs, depth, &n);
+    if (!u) {
+        aa->failed = 1;
+        return;
+    }
+    for (int i = 0; i < n; i++) point(aa, c.x + r * u[i].x, c.y + r * u[i].y);
     if (reverse) { /* reverse the contour's points in place */
         for (int i = start, j = aa->npts - 1; i < j; i++, j--) {
             pl_vec2 t = aa->pts[i];
@@ -583,24 +748,319 @@ int pl_aa_convex_outline_check(const pl_vec2 *p, int n, double w) {
 
 /* -------------------------------------------------------------- compositing */
 
-int pl_aa_fill(pl_aa *aa, uint8_t *data, int stride, pl_rgba color) {
-    set_color(aa, color);
-    for (int k = 0; k < aa->nrects; k++) {
-        aa_rect r = aa->rects[k];
-        for (int y = r.y0; y < r.y1; y++) {
-            float *cov = aa->batch + (size_t)y * (size_t)aa->w;
-            uint32_t *row = (uint32_t *)(void *)(data + (size_t)y * (size_t)stride);
-            for (int x = r.x0; x < r.x1; x++) {
-                float c = cov[x];
-                if (c <= 0.0f) continue;
-                cov[x] = 0.0f; /* composited once, even where rectangles overlap */
-                row[x] = blend(aa, row[x], c);
+static void fill_rect(pl_aa *aa, uint8_t *data, int stride, aa_rect r) {
+    for (int y = r.y0; y < r.y1; y++) {
+        uint8_t *cov = aa->batch + (size_t)y * (size_t)aa->w;
+        uint32_t *row = (uint32_t *)(void *)(data + (size_t)y * (size_t)stride);
+        int x = r.x0;
+        while (x < r.x1) {
+            if (x + 8 <= r.x1) { /* skip empty runs 8 pixels at a time */
+                uint64_t v;
+                memcpy(&v, cov + x, 8);
+                if (!v) {
+                    x += 8;
+                    continue;
+                }
             }
+            unsigned c = cov[x];
+            if (c) {
+                cov[x] = 0; /* composited once, even where rectangles overlap */
+                row[x] = blend8(aa, row[x], c);
+            }
+            x++;
         }
     }
+}
+
+/* composites a sum batch: one running sum per row over the deposited columns, which are
+ * cleared on the way */
+static void fill_sum(pl_aa *aa, uint8_t *data, int stride) {
+    int fbw = aa->w + 2;
+    int in_x0 = iceil(aa->cx0), in_x1 = ifloor(aa->cx1);
+    for (int y = 0; y < aa->h; y++) {
+        int lo = aa->frlo[y], hi = aa->frhi[y];
+        if (lo >= hi) continue;
+        aa->frlo[y] = fbw;
+        aa->frhi[y] = 0;
+        float *acc = aa->facc + (size_t)y * (size_t)fbw;
+        uint32_t *row = (uint32_t *)(void *)(data + (size_t)y * (size_t)stride);
+        double fy = dmin(y + 1.0, aa->cy1) - dmax((double)y, aa->cy0);
+        int end = hi < aa->w ? hi : aa->w;
+        float run = 0.0f;
+        for (int x = lo; x < end; x++) {
+            run += acc[x];
+            acc[x] = 0.0f;
+            float cov = fabsf(run);
+            if (cov < 0.5f / 255.0f) continue;
+            if (cov > 1.0f) cov = 1.0f;
+            if (fy < 1.0 || x < in_x0 || x >= in_x1) {
+                double fx = dmin(x + 1.0, aa->cx1) - dmax((double)x, aa->cx0);
+                cov *= (float)(dmax(0.0, fx) * dmax(0.0, fy));
+            }
+            row[x] = blend(aa, row[x], cov);
+        }
+        for (int x = end > lo ? end : lo; x < hi; x++) acc[x] = 0.0f;
+    }
+}
+
+int pl_aa_fill(pl_aa *aa, uint8_t *data, int stride, pl_rgba color) {
+    set_color(aa, color);
+    if (aa->sum) {
+        fill_sum(aa, data, stride);
+        aa->sum = 0;
+    }
+    if (aa->incr) { /* composited already: clear the coverage */
+        for (int k = 0; k < aa->nrects; k++) {
+            aa_rect r = aa->rects[k];
+            for (int y = r.y0; y < r.y1; y++)
+                memset(aa->batch + (size_t)y * (size_t)aa->w + r.x0, 0, (size_t)(r.x1 - r.x0));
+        }
+        aa->nrects = 0;
+    }
+    /* the rectangles of many shapes overlap: when together they are larger than their
+     * bounding box, the box is visited once instead */
+    aa_rect box = {aa->w, aa->h, 0, 0};
+    double area = 0.0;
+    for (int k = 0; k < aa->nrects; k++) {
+        aa_rect r = aa->rects[k];
+        area += (double)(r.x1 - r.x0) * (double)(r.y1 - r.y0);
+        if (r.x0 < box.x0) box.x0 = r.x0;
+        if (r.y0 < box.y0) box.y0 = r.y0;
+        if (r.x1 > box.x1) box.x1 = r.x1;
+        if (r.y1 > box.y1) box.y1 = r.y1;
+    }
+    if (aa->nrects > 1 && area > (double)(box.x1 - box.x0) * (double)(box.y1 - box.y0))
+        fill_rect(aa, data, stride, box);
+    else
+        for (int k = 0; k < aa->nrects; k++) fill_rect(aa, data, stride, aa->rects[k]);
     int rc = aa->failed ? -1 : 0;
     aa->nrects = 0;
     aa->failed = 0;
     aa->idata = NULL;
+    aa->incr = 0;
     return rc;
+}
+
+/* ------------------------------------------------------------- thin segments */
+
+static void push_rect(pl_aa *aa, aa_rect r) {
+    if (aa->nrects == aa->rect_cap) {
+        int ncap = aa->rect_cap ? 2 * aa->rect_cap : 64;
+        aa_rect *nr = realloc(aa->rects, (size_t)ncap * sizeof *nr);
+        if (!nr) {
+            aa->failed = 1;
+            return;
+        }
+        aa->rects = nr;
+        aa->rect_cap = ncap;
+    }
+    aa->rects[aa->nrects++] = r;
+}
+
+/* Coverage of a pixel by a straight band, from the distribution of the pixel square projected
+ * onto the band's normal: for a unit normal (nx, ny) with a = min(|nx|, |ny|), b = max, the
+ * projection of a uniform point of the square is the sum of two uniform variables of widths
+ * a and b, whose distribution function is quadratic, linear, quadratic. The fraction of the
+ * pixel whose projection lies in [s0, s1] is exact for a straight band of any direction. */
+typedef struct proj_cdf {
+    float a, b, half, inv2ab, invb;
+} proj_cdf;
+
+static proj_cdf make_cdf(double nx, double ny) {
+    proj_cdf p;
+    double ax = fabs(nx), ay = fabs(ny);
+    p.a = (float)(ax < ay ? ax : ay);
+    p.b = (float)(ax < ay ? ay : ax);
+    p.half = 0.5f * (p.a + p.b);
+    p.inv2ab = p.a > 1e-6f ? 1.0f / (2.0f * p.a * p.b) : 0.0f;
+    p.invb = 1.0f / p.b;
+    return p;
+}
+
+static inline float cdf(const proj_cdf *p, float s) {
+    float t = s + p->half;
+    if (t <= 0.0f) return 0.0f;
+    if (t >= 2.0f * p->half) return 1.0f;
+    if (t < p->a) return t * t * p->inv2ab;
+    if (t <= p->b) return (t - 0.5f * p->a) * p->invb;
+    float u = 2.0f * p->half - t;
+    return 1.0f - u * u * p->inv2ab;
+}
+
+/* The coverage of a band of half width hw at distance d from the pixel centre, 8-bit, at
+ * d = i / LUT_RES, for the direction class of the band (LUT_A classes of min(|nx|, |ny|)
+ * over [0, sqrt(1/2)]): filled the first time a class is used with this width. Errors:
+ * rounding d to 1/128 px, at most 2/255; the direction class, at most about 2/255. */
+enum { LUT_RES = 64, LUT_A = 9 };
+
+static const uint8_t *seg_lut(pl_aa *aa, double hw, double nx, double ny, int *n) {
+    if (aa->lut_hw != hw || !aa->lut) {
+        int nn = (int)((hw + 0.7072) * LUT_RES) + 2;
+        uint8_t *l = realloc(aa->lut, (size_t)nn * LUT_A);
+        if (!l) return NULL;
+        aa->lut = l;
+        aa->lut_n = nn;
+        aa->lut_hw = hw;
+        memset(aa->lut_ok, 0, sizeof aa->lut_ok);
+    }
+    double am = fmin(fabs(nx), fabs(ny));
+    int k = (int)(am / 0.70710678 * (LUT_A - 1) + 0.5);
+    if (k > LUT_A - 1) k = LUT_A - 1;
+    uint8_t *row = aa->lut + (size_t)k * (size_t)aa->lut_n;
+    if (!aa->lut_ok[k]) {
+        double ak = 0.70710678 * k / (LUT_A - 1);
+        proj_cdf pc = make_cdf(ak, sqrt(1.0 - ak * ak));
+        float fhw = (float)hw;
+        for (int i = 0; i < aa->lut_n; i++) {
+            float d = (float)i / LUT_RES;
+            float cov = cdf(&pc, fhw - d) - cdf(&pc, -fhw - d);
+            row[i] = (uint8_t)(cov <= 0.0f ? 0u : (cov >= 1.0f ? 255u : cov8(cov)));
+        }
+        row[aa->lut_n - 1] = 0;
+        aa->lut_ok[k] = 1;
+    }
+    *n = aa->lut_n;
+    return row;
+}
+
+void pl_aa_thin_segment(pl_aa *aa, pl_vec2 a, pl_vec2 b, double w) {
+    double hw = 0.5 * w;
+    if (!(hw > 0.0)) return;
+    double dx = b.x - a.x, dy = b.y - a.y, len = sqrt(dx * dx + dy * dy);
+    if (!(len < 1e7) || !isfinite(a.x + a.y)) return;
+    double ux = 1.0, uy = 0.0;
+    if (len > 1e-9) {
+        ux = dx / len;
+        uy = dy / len;
+    } else {
+        len = 0.0;
+    }
+    proj_cdf pc = make_cdf(uy, ux);
+    double reach = hw + pc.half; /* no coverage beyond this distance from the segment */
+    int px0 = ifloor(dmax(dmin(a.x, b.x) - reach, aa->cx0));
+    int px1 = iceil(dmin(dmax(a.x, b.x) + reach, aa->cx1));
+    int py0 = ifloor(dmax(dmin(a.y, b.y) - reach, aa->cy0));
+    int py1 = iceil(dmin(dmax(a.y, b.y) + reach, aa->cy1));
+    if (px1 <= px0 || py1 <= py0) return;
+    double bx0 = dmin(a.x, b.x) - reach, bx1 = dmax(a.x, b.x) + reach;
+    float fhw = (float)hw;
+    float full = fhw - pc.half; /* closer than this: covered (never when w < a + b) */
+    float fux = (float)ux, fuy = (float)uy, flen = (float)len, fdx = (float)dx;
+    int cx0 = ifloor(aa->cx0), cx1 = iceil(aa->cx1);
+    int incr = aa->incr && aa->idata;
+    int px_any = aa->idata != NULL;
+    int lut_n = 0;
+    const uint8_t *lut = seg_lut(aa, hw, uy, ux, &lut_n);
+    for (int y = py0; y < py1; y++) {
+        double yc = y + 0.5;
+        /* x range of pixel centres within reach: inside the band of half width reach
+         * around the segment's line (in x: reach / |uy| either side of the line's crossing
+         * with the row), within the box; a little more than needed near the ends */
+        double ey = yc - a.y, fy = yc - b.y;
+        double lo = bx0, hi = bx1;
+        if (fabs(uy) > 1e-3) {
+            double xc = a.x + ey * ux / uy, hwx = reach / fabs(uy);
+            lo = dmax(lo, xc - hwx);
+            hi = dmin(hi, xc + hwx);
+        }
+        if (!(lo <= hi)) continue;
+        int xa = iceil(lo - 0.5), xb = ifloor(hi - 0.5) + 1;
+        if (xa < px0) xa = px0;
+        if (xb > px1) xb = px1;
+        if (xa >= xb) continue;
+        double fyc = dmin(y + 1.0, aa->cy1) - dmax((double)y, aa->cy0);
+        uint8_t *out = aa->batch + (size_t)y * (size_t)aa->w;
+        uint32_t *px = aa->idata ? aa->idata + (size_t)y * (size_t)aa->istride : NULL;
+        int inside = fyc >= 1.0 && xa > cx0 && xb < cx1; /* no pixel of the row clipped */
+        /* relative to a, in float; t (along) and c (across) step linearly with x */
+        float qx = (float)(xa + 0.5 - a.x), qy = (float)ey, ry = (float)fy;
+        float t = fux * qx + fuy * qy, c = fux * qy - fuy * qx;
+        if (inside && lut) { /* the common case: tabulated coverage, no clipping */
+            for (int x = xa; x < xb; x++, qx += 1.0f, t += fux, c -= fuy) {
+                float d;
+                if (t <= 0.0f) d = sqrtf(qx * qx + qy * qy);
+                else if (t >= flen) {
+                    float rx = qx - fdx;
+                    d = sqrtf(rx * rx + ry * ry);
+                } else d = fabsf(c);
+                int li = (int)(d * LUT_RES + 0.5f);
+                unsigned m = li < lut_n ? lut[li] : 0u;
+                if (!m) continue;
+                if (incr) {
+                    unsigned m0 = out[x];
+                    if (m <= m0) continue;
+                    out[x] = (uint8_t)m;
+                    px[x] = blend8(aa, px[x], incr_cov(m0, m));
+                } else if (px) px[x] = blend8(aa, px[x], m);
+                else if (m > out[x]) out[x] = (uint8_t)m;
+            }
+            continue;
+        }
+        for (int x = xa; x < xb; x++, qx += 1.0f, t += fux, c -= fuy) {
+            float d;
+            if (t <= 0.0f) d = sqrtf(qx * qx + qy * qy);
+            else if (t >= flen) {
+                float rx = qx - fdx;
+                d = sqrtf(rx * rx + ry * ry);
+            } else d = fabsf(c);
+            unsigned m;
+            if (d <= full) m = 255u; /* the pixel lies inside the band */
+            else {
+                float cov = cdf(&pc, fhw - d);
+                if (d < pc.half - fhw) cov -= cdf(&pc, -fhw - d);
+                if (cov <= 0.0f) continue;
+                if (!inside) {
+                    double fx = dmin(x + 1.0, aa->cx1) - dmax((double)x, aa->cx0);
+                    cov *= (float)(dmax(0.0, fx) * dmax(0.0, fyc));
+                    if (cov <= 0.0f) continue;
+                }
+                m = cov8(cov);
+                if (!m) continue;
+            }
+            if (m == 255u && !inside) {
+                double fx = dmin(x + 1.0, aa->cx1) - dmax((double)x, aa->cx0);
+                m = cov8((float)(dmax(0.0, fx) * dmax(0.0, fyc)));
+                if (!m) continue;
+            }
+            if (incr) {
+                unsigned m0 = out[x];
+                if (m <= m0) continue;
+                out[x] = (uint8_t)m;
+                px[x] = blend8(aa, px[x], incr_cov(m0, m));
+            } else if (px) px[x] = blend8(aa, px[x], m);
+            else if (m > out[x]) out[x] = (uint8_t)m;
+        }
+    }
+    if (!px_any || incr) push_rect(aa, (aa_rect){px0, py0, px1, py1});
+}
+
+
+/* ------------------------------------------------------------------- arrows */
+
+static double shoelace(const pl_vec2 *p, int n) {
+    double a = 0.0;
+    for (int i = 0; i < n; i++) a += p[i].x * p[(i + 1) % n].y - p[(i + 1) % n].x * p[i].y;
+    return a;
+}
+
+static void contour(pl_aa *aa, const pl_vec2 *p, int n, int reverse) {
+    contour_start(aa);
+    for (int i = 0; i < n; i++) {
+        pl_vec2 q = p[reverse ? n - 1 - i : i];
+        point(aa, q.x, q.y);
+    }
+}
+
+void pl_aa_arrow(pl_aa *aa, pl_vec2 a, pl_vec2 shaft_end, double w, const pl_vec2 head[3]) {
+    double hw = 0.5 * w;
+    double dx = shaft_end.x - a.x, dy = shaft_end.y - a.y, len = sqrt(dx * dx + dy * dy);
+    double sh = 1.0; /* both contours positive: in sum batches, arrows add up */
+    if (hw > 0.0 && len > 1e-9) {
+        double nx = -dy / len * hw, ny = dx / len * hw;
+        pl_vec2 bar[4] = {{a.x + nx, a.y + ny}, {shaft_end.x + nx, shaft_end.y + ny},
+                          {shaft_end.x - nx, shaft_end.y - ny}, {a.x - nx, a.y - ny}};
+        contour(aa, bar, 4, (shoelace(bar, 4) > 0.0) != (sh > 0.0));
+    }
+    contour(aa, head, 3, shoelace(head, 3) < 0.0);
+    shape_end(aa);
 }

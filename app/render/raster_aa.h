@@ -1,11 +1,12 @@
 /// Antialiased rasterizer for small primitives on image surfaces (discs, rings, capsules,
-/// small convex polygons and their outlines, arrow parts), used by the cairo backend where
-/// cairo's per-path cost dominates: thousands of small bodies, force-chain and mesh segments,
-/// arrows. Each shape's coverage is its exact area per pixel (signed-area accumulation over
-/// its bounding box); the shapes of one batch combine by the per-pixel maximum (the union
-/// where shapes meet or nest; at antialiased crossings slightly less than the union), and a
-/// batch is composited once (OVER, 8-bit premultiplied arithmetic as pixman's). Pictures
-/// match cairo's within the image-diff tolerance of docs/rendering.md. Pixels, y down.
+/// small convex polygons and their outlines, arrows, segments), used by the cairo backend
+/// where cairo's per-path cost dominates: thousands of small bodies, force-chain and mesh
+/// segments, arrows. Shapes built of edges get their exact area per pixel (signed-area
+/// accumulation over the bounding box, or over the whole image in sum batches); segments get
+/// the coverage of a band at the pixel's distance. The shapes of one batch combine by the
+/// per-pixel maximum (the union where shapes meet or nest) or, in sum batches, by their sum
+/// clamped to 1; compositing is OVER with pixman's 8-bit premultiplied arithmetic. How far the
+/// pictures are from cairo's is measured in docs/rendering.md (Performance). Pixels, y down.
 #ifndef PORELAB_RASTER_AA_H
 #define PORELAB_RASTER_AA_H
 
@@ -20,10 +21,21 @@ void pl_aa_destroy(pl_aa *aa);
 
 /// Starts a batch drawn inside the clip rectangle [x0, x1) x [y0, y1) (pixels).
 void pl_aa_begin(pl_aa *aa, double x0, double y0, double x1, double y1);
+/// Starts a sum batch in the clip rectangle: the coverages of its shapes (polygons, arrows;
+/// give them one orientation) add up, clamped to 1 — their union inside, nearly cairo's
+/// one-over-the-other at overlapping antialiased edges — in one buffer over the whole image,
+/// composited by pl_aa_fill in one pass (no per-shape buffers: for thousands of small
+/// overlapping shapes). Returns -1 when out of memory (the batch is then an ordinary one).
+int pl_aa_begin_sum(pl_aa *aa, double x0, double y0, double x1, double y1);
 /// Makes the current batch immediate: each shape is composited with the colour as soon as it
 /// is added (for batches of one shape, or of shapes drawn one over the other); pl_aa_fill
 /// then only ends the batch.
 void pl_aa_immediate(pl_aa *aa, uint8_t *data, int stride, pl_rgba color);
+/// Makes the current batch incremental: each pixel is composited as soon as a shape raises its
+/// coverage (by the amount that brings it from the previous maximum to the new one, so the
+/// result is that of compositing the per-pixel maximum once, up to 8-bit rounding), no
+/// compositing pass at the end; pl_aa_fill then only clears. For pl_aa_thin_segment only.
+void pl_aa_incremental(pl_aa *aa, uint8_t *data, int stride, pl_rgba color);
 /// Adds a filled simple polygon (n >= 3 points, either orientation).
 void pl_aa_polygon(pl_aa *aa, const pl_vec2 *p, int n);
 /// Adds a filled circle, flattened within a fraction of cairo's 0.1 px tolerance.
@@ -40,6 +52,16 @@ int pl_aa_convex_outline_check(const pl_vec2 *p, int n, double w);
 void pl_aa_capsule(pl_aa *aa, pl_vec2 a, pl_vec2 b, double w);
 /// Adds a segment stroked with butt caps, width w.
 void pl_aa_bar(pl_aa *aa, pl_vec2 a, pl_vec2 b, double w);
+/// Adds a segment (round caps, width w: force chains and mesh lines, any length): the coverage of
+/// each pixel is that of the straight band of width w at the pixel centre's distance from the
+/// segment (exact along the band for any direction, the same formula around the caps), so the
+/// per-pixel maximum of a batch is the coverage by the distance to the union of its segments:
+/// lines meeting at a node join without gaps and without doubly blended pixels.
+void pl_aa_thin_segment(pl_aa *aa, pl_vec2 a, pl_vec2 b, double w);
+/// Adds an arrow as one shape: the shaft from a to shaft_end (butt caps, width w) and the head
+/// triangle, same orientation, so that their coverages add (clamped to 1) where they overlap,
+/// as cairo's shaft-then-head compositing nearly does.
+void pl_aa_arrow(pl_aa *aa, pl_vec2 a, pl_vec2 shaft_end, double w, const pl_vec2 head[3]);
 /// Composites the batch with the colour (non-premultiplied) over a premultiplied ARGB32
 /// image (data, stride in bytes) and clears it. Returns -1 when memory ran out while the
 /// batch was built (shapes are missing), else 0.
