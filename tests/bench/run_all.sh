@@ -15,11 +15,11 @@ cmake --build "$build" -j2 --target bench_dem >/dev/null
 
 if [ "$what" = all ] || [ "$what" = dem ]; then
   csv=$out/dem.csv
-  echo "label,particles,contacts,steps,seconds,particle_steps_per_s,contacts_per_s,bytes_per_particle" > "$csv"
+  echo "label,particles,contacts,steps,cpu_seconds,wall_seconds,particle_steps_per_cpu_s,contacts_per_cpu_s,bytes_per_particle" > "$csv"
   echo "== grains: porelab (one core) =="
   "$build/tests/bench_dem" --label discs_5978 --csv "$csv"
   "$build/tests/bench_dem" --label discs_5978_no_energy --no-energy --csv "$csv"
-  "$build/tests/bench_dem" --label discs_20k --columns 98 --rows 204 --settle 0.8 --settle-dt 2e-5 --steps 5000 --csv "$csv"
+  "$build/tests/bench_dem" --label discs_20k --columns 98 --rows 204 --settle 0.8 --settle-dt 2e-5 --settle-damping 30 --steps 5000 --csv "$csv"
   "$build/tests/bench_dem" --label polygons_5k --polygons --columns 49 --rows 102 --settle 0.3 --settle-dt 2e-5 --steps 2000 --csv "$csv"
   echo "== grains: LIGGGHTS (same packing, same core count) =="
   "$here/run_liggghts.sh" 20000 | tee "$out/liggghts.txt"
