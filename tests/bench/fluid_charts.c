@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "porelab/fluid.h"
 #include "porelab/world.h"
+#include "fluid/wave_rod.h"
 #include <math.h>
 #include <plplot.h>
 #include <stdio.h>
@@ -18,29 +19,7 @@ static double cpu(void) {
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static pl_world *rod(int n, int method) {
-    pl_world_def wd = pl_default_world_def();
-    wd.gravity = (pl_vec2){0, 0};
-    pl_world *w = pl_world_create(&wd);
-    pl_world_set_flag(w, "GRAVITY_Y", 0);
-    pl_fluid_quad_def d = pl_default_fluid_quad_def();
-    d.corners[0] = (pl_vec2){0, 0};
-    d.corners[1] = (pl_vec2){1, 0};
-    d.corners[2] = (pl_vec2){1, 0.1};
-    d.corners[3] = (pl_vec2){0, 0.1};
-    d.ndivx = n;
-    d.ndivy = 1;
-    pl_world_add_fluid_quad(w, &d);
-    pl_world_add_fluid_bc(w, (pl_vec2){0, 0}, (pl_vec2){0, 0.1}, 1.0);
-    pl_world_add_fluid_bc(w, (pl_vec2){1, 0}, (pl_vec2){1, 0.1}, 0.0);
-    pl_world_set_flag(w, "FLUID_PERM", 0);
-    pl_world_set_flag(w, "FLUID_PERM_HIGH", 1.0);
-    pl_world_set_flag(w, "FLUID_STORAGE", 1.0);
-    pl_world_set_flag(w, "FLUID_DRAG", 0);
-    pl_world_set_flag(w, "FLUID_METHOD", method);
-    pl_world_fluid_set_pressure_head(w, 0.0);
-    return w;
-}
+static pl_world *rod(int n, int method) { return wave_rod(n, method, 0); }
 
 /* Profile along y = 0: nodes on the bottom edge, sorted by x (they are created in order). */
 static int profile(pl_world *w, double *x, double *h, int cap) {

@@ -31,3 +31,4 @@ target_compile_definitions(bench_render PRIVATE ${_pl_render_defs})
 # tools/figures.sh (not a test).
 add_executable(seed_wave_figures render/seed_wave_figures.c)
 target_link_libraries(seed_wave_figures PRIVATE porelab_render)
+target_include_directories(seed_wave_figures PRIVATE ${PL_TEST_DIR})
