@@ -1,6 +1,5 @@
 /* Scene, stepping, parameters and the replay log of the window (see window_sim.h). */
 #include "window_sim.h"
-#include "porelab/fluid.h"
 #include "scene_render.h"
 
 #include <math.h>
@@ -213,12 +212,12 @@ static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
     sim->mtime = mt;
     sim->stopped = 0;
     sim->error[0] = 0;
-    /* snapshots: the engine snapshots worlds without a pore fluid; an on_frame hook may keep
-     * state in Lua that a snapshot would not restore */
+    /* snapshots (the engine's cover the pore fluid too); an on_frame hook may keep state in
+     * Lua that a snapshot would not restore: such scenes replay from t = 0 */
     free_snaps(sim);
     int hook = pl_scene_push_result_field(s, "on_frame") != LUA_TNIL;
     lua_pop(pl_scene_lua(s), 1);
-    sim->snap_ok = !hook && pl_world_fluid_node_count(w) == 0;
+    sim->snap_ok = !hook;
     long long fi = pl_run_plan_frame_step(&plan, 1) - pl_run_plan_frame_step(&plan, 0);
     sim->snap_spacing = fi > 0 ? fi : 1;
     return 0;

@@ -3,14 +3,14 @@
  * rewinding exact.
  *
  * Rewind to step S: from the latest snapshot at or before S (pl_world_snapshot: bodies,
- * contacts with their history, energy tallies, flags), replaying the logged interactions
- * (parameter changes, fix/release, spring loads) and the steps from there to S. Snapshots
- * are taken at scene frames while playing (memory budget PL_WSIM_SNAP_BYTES; when it is
- * full every other snapshot is dropped, so they thin out evenly) for worlds the engine can
- * snapshot and scenes whose Lua state cannot diverge: the engine does not capture pore-fluid
- * state yet, and an on_frame hook may keep state in Lua variables. Otherwise the scene is
- * reloaded and replayed from t = 0. Either way the result is bit-identical to the first
- * pass (same state hash). */
+ * contacts with their history, energy tallies, flags, the pore fluid's fields, boundary
+ * conditions and update phase), replaying the logged interactions (parameter changes,
+ * fix/release, spring loads) and the steps from there to S. Snapshots are taken at scene
+ * frames while playing (memory budget PL_WSIM_SNAP_BYTES; when it is full every other
+ * snapshot is dropped, so they thin out evenly) for scenes whose Lua state cannot diverge:
+ * an on_frame hook may keep state in Lua variables, so such scenes are reloaded and
+ * replayed from t = 0 instead. Either way the result is bit-identical to the first pass
+ * (same state hash). */
 #ifndef PL_APP_WINDOW_SIM_H
 #define PL_APP_WINDOW_SIM_H
 

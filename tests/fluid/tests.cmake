@@ -8,6 +8,7 @@ pl_add_c_test(test_fluid_buoyancy SOURCES ${PL_TEST_DIR}/fluid/test_fluid_buoyan
 pl_add_c_test(test_fluid_bed SOURCES ${PL_TEST_DIR}/fluid/test_fluid_bed.c LABEL fluid TIMEOUT 120)
 pl_add_c_test(test_fluid_porosity SOURCES ${PL_TEST_DIR}/fluid/test_fluid_porosity.c LABEL fluid TIMEOUT 60)
 target_include_directories(test_fluid_porosity PRIVATE ${CHOLMOD_INCLUDE})
+pl_add_c_test(test_fluid_snapshot SOURCES ${PL_TEST_DIR}/fluid/test_fluid_snapshot.c LABEL fluid TIMEOUT 60)
 # Benchmark (not a test): tests/bench/bench_fluid.c; FreeFEM++ comparison: tests/bench/run_freefem.sh
 add_executable(bench_fluid ${PL_TEST_DIR}/bench/bench_fluid.c)
 target_link_libraries(bench_fluid PRIVATE porelab_engine)
@@ -16,7 +17,7 @@ find_library(PLPLOT_LIB plplot)
 find_path(PLPLOT_INCLUDE plplot.h PATH_SUFFIXES plplot)
 if(PLPLOT_LIB AND PLPLOT_INCLUDE)
   add_executable(fluid_charts EXCLUDE_FROM_ALL ${PL_TEST_DIR}/bench/fluid_charts.c)
-  target_include_directories(fluid_charts PRIVATE ${PLPLOT_INCLUDE})
+  target_include_directories(fluid_charts PRIVATE ${PLPLOT_INCLUDE} ${PL_TEST_DIR})
   target_link_libraries(fluid_charts PRIVATE porelab_engine ${PLPLOT_LIB})
 endif()
 # Lua binding and scenes: enabled once lua/CMakeLists.txt builds wrap_fluid.c (the lead wires it).

@@ -2,8 +2,8 @@
 # Every scene in scenes/ opens in the live window under Xvfb, runs two scene frames, and its
 # state (state hash) and screenshot equal those of `porelab run --renderer gl --steps K` at the
 # same step (same frame plan, same on_frame hook calls; the last frame, PSNR >= 40 dB). Then
-# it rewinds one frame (from a snapshot, or by a replay from the start for scenes with a
-# fluid or an on_frame hook) and steps again: same state hash and identical screenshot.
+# it rewinds one frame (from a snapshot, pore fluid included, or by a replay from the start
+# for scenes with an on_frame hook) and steps again: same state hash and identical screenshot.
 # Imperative scripts (no world to show) are skipped, and so are scenes that fail headless
 # too (their own tests report those).
 #   test_window_scenes.sh PORELAB GL_PSNR SOURCE_DIR OUT_DIR

@@ -253,7 +253,9 @@ double pl_world_coordination_number(const pl_world *w);
 /// PREFIX_contacts.vtu. Returns PL_OK or PL_ERR_IO with a message.
 pl_status pl_world_write_vtk(const pl_world *w, const char *prefix);
 
-/// 64-bit hash of the full dynamic state (positions, velocities, contact history, time).
+/// 64-bit hash of the full dynamic state (positions, velocities, contact history, time; with a
+/// pore fluid also its heads, conductivities, solid areas, consolidation state, reused forces
+/// and update phase).
 uint64_t pl_world_state_hash(const pl_world *w);
 
 /// Axis-aligned bounds of all bodies (for cameras).
@@ -262,12 +264,13 @@ void pl_world_bounds(const pl_world *w, pl_vec2 *lo, pl_vec2 *hi);
 /* -------------------------------------------------------------- snapshots */
 
 /// A copy of the full state of a world between steps: bodies, motion laws, contacts with
-/// their history, energy tallies, parameters and flags. Restoring it and stepping gives
-/// bit-identical results to the original run (rewind in the live window, restarts).
+/// their history, energy tallies, parameters and flags, and the pore fluid's state (fields,
+/// caches that decide later results, boundary lines, the fluid update's phase; docs/fluid.md
+/// §8). Restoring it and stepping gives bit-identical results to the original run (rewind in
+/// the live window, restarts).
 typedef struct pl_snapshot pl_snapshot;
 
-/// Takes a snapshot; NULL when out of memory, or when the world has a fluid model (its
-/// state is not captured yet; the message says so).
+/// Takes a snapshot; NULL when out of memory (the message says so).
 pl_snapshot *pl_world_snapshot(pl_world *w);
 /// Restores a snapshot into the world it was taken from (same bodies, vertices and materials;
 /// a snapshot of a different world is refused with a message).

@@ -1,5 +1,6 @@
 /* Read-only diagnostics: energies, momentum, contacts, bounds and the state hash. */
 #include "dem/world_internal.h"
+#include "fluid/fluid_snapshot.h"
 #include <math.h>
 #include <string.h>
 
@@ -128,5 +129,5 @@ uint64_t pl_world_state_hash(const pl_world *w) {
         h = pl_hash_bytes(h, &p->fs, sizeof p->fs);
         h = pl_hash_bytes(h, &p->area_prev, sizeof p->area_prev);
     }
-    return h;
+    return pl__fluid_hash(w->fluid, h); /* pore-fluid state (no change without a fluid) */
 }

@@ -2,8 +2,11 @@
  * of the world struct (all scalars) and deep copies of every array that carries state. On
  * restore the live world keeps its own buffers and capacities; only their contents and the
  * scalars are taken from the snapshot. The broadphase's grid/large split is kept too (it sets
- * the skin and so the rebuild times); its other buffers are scratch. */
+ * the skin and so the rebuild times); its other buffers are scratch. The pore-fluid model's
+ * state is captured by the fluid module (fluid/fluid_snapshot.c). */
 #include "dem/world_internal.h"
+#include "fluid/fluid_hook.h"
+#include "fluid/fluid_snapshot.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,6 +33,7 @@ struct pl_snapshot {
     void *data[NSPECS];  /* deep copies */
     uint8_t *is_large;   /* broadphase split (NULL when the world was never classified) */
     int32_t *large_list;
+    pl_fl_snapshot *fluid; /* NULL when the world had no fluid model */
     size_t bytes;
 };
 
@@ -51,20 +55,26 @@ void pl_snapshot_destroy(pl_snapshot **sp) {
     for (int k = 0; k < NSPECS; k++) free((*sp)->data[k]);
     free((*sp)->is_large);
     free((*sp)->large_list);
+    pl__fluid_snapshot_free(&(*sp)->fluid);
     free(*sp);
     *sp = NULL;
 }
 
 pl_snapshot *pl_world_snapshot(pl_world *w) {
-    if (w->fluid) {
-        pl__error(w, PL_ERR_NOT_BUILT, "snapshot: worlds with a pore-fluid model cannot be snapshot yet "
-                                       "(the fluid state is not captured); rerun from the start instead");
-        return NULL;
-    }
     pl_snapshot *s = calloc(1, sizeof *s);
     if (!s) return NULL;
     s->w = *w;
     s->bytes = sizeof *s;
+    if (w->fluid) {
+        size_t fb = 0;
+        s->fluid = pl__fluid_snapshot(w->fluid, &fb);
+        if (!s->fluid) {
+            pl_snapshot_destroy(&s);
+            pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory for the fluid state");
+            return NULL;
+        }
+        s->bytes += fb;
+    }
     for (int k = 0; k < NSPECS; k++) {
         const size_t bytes = count_of(w, SPECS[k].count_kind) * SPECS[k].elem;
         if (bytes == 0) continue;
@@ -100,7 +110,14 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
                          "restore: the snapshot is of a world with %d bodies, %d outline vertices and %d materials; "
                          "this one has %d, %d and %d",
                          o->n, o->verts_n, o->material_count, w->n, w->verts_n, w->material_count);
-    if (w->fluid) return pl__error(w, PL_ERR_NOT_BUILT, "restore: worlds with a pore-fluid model cannot be restored yet");
+    /* the fluid first: it may fail (out of memory) before anything of the world changed */
+    if (s->fluid) {
+        pl_status st = pl__fluid_restore(w, s->fluid);
+        if (st != PL_OK) return st;
+    } else if (w->fluid) { /* the snapshot is from before the first fluid quad */
+        pl__fluid_free(w->fluid);
+        w->fluid = NULL;
+    }
     if (s->is_large && w->class_cap < w->n) {
         uint8_t *a = realloc(w->is_large, (size_t)w->n);
         if (a) w->is_large = a;

@@ -13,7 +13,8 @@ pl_status pl__fluid_step(pl_world *w, double dt) {
     if (pl__fluid_flag(w, "FLUIDS_ON", 0) == 0) return PL_OK; /* FLUIDS_ON = 0: no fluid work at all */
     pl_status st;
     f->out_time = w->time + dt; /* a solve in this step gives the field at its end */
-    if (!f->initialised || f->mesh_dirty || f->bc_dirty) {
+    if (!f->initialised || f->mesh_dirty || f->bc_dirty || f->refresh_pending) {
+        f->refresh_pending = 0;
         pl__fluid_read_params(w, &f->par);
         /* FIRST_STEP_STATIC (seed 000 §3.9.3): static field first; otherwise one transient step
            from the boundary values (eq. 3.18 with phi(0) = phi_bc) */
@@ -83,7 +84,7 @@ void pl__fluid_free(struct pl_fluid *f) {
     pl__fluid_free_state(f);
     pl_fl_system_free(&f->sys);
     pl_fl_mesh_free(&f->mesh);
-    free(f->fcache); free(f->quads); free(f->lines); free(f->cover); free(f->body_cover_start); free(f->pix_pair);
+    free(f->fcache); free(f->quads); free(f->lines); free(f->cover); free(f->body_cover_start); free(f->cover_xyr); free(f->pix_pair);
     free(f);
 }
 

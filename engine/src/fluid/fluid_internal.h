@@ -46,6 +46,13 @@ typedef struct pl_fl_mesh {
     double cell;
     int gx, gy;
     int32_t *cell_start, *cell_items;
+    /* per-triangle geometry kept for the per-grain loops (built with the grid): bounding box
+       (lo.x, lo.y, hi.x, hi.y), the first grid cell the box overlaps (i, j), and for each edge
+       k = 0..2 (from vertex k to k+1) its direction angle atan2(ey, ex) and length */
+    double *tri_box;    /* 4 * ne */
+    int32_t *tri_cell0; /* 2 * ne */
+    double *edge_ang;   /* 3 * ne */
+    double *edge_len;   /* 3 * ne */
     /* boundary edges (used once) */
     int nbe;
     int32_t *bedge;     /* 2 * nbe, oriented as in their triangle (counter-clockwise) */
@@ -169,11 +176,15 @@ struct pl_fluid {
     int32_t *pix_cnt, *pix_fill, *pix_pair; int pix_cap; /* pixellation scratch */
     int32_t *body_cover_start;  /* n+1 per body ranges into cover (sorted by body) */
     int cover_bodies;           /* bodies known to the last porosity update */
+    double *cover_xyr;          /* 3 * cover_bodies: x, y, radius of each body at the last
+                                   porosity update: its covers are current while these match */
     int body_cap;
     int k_dirty;                /* permeabilities changed since the last assembly */
     int have_solution;          /* head holds a solution for the current system */
     int static_valid;           /* head is the static solution of the current matrix and BCs */
     int initialised;            /* first fluid step done */
+    int refresh_pending;        /* BCs rebuilt by a query: the next step still makes the update
+                                   that a change of boundary conditions asks for */
     int64_t steps_since;        /* grain steps since the last solve */
     double time_since;          /* time since the last solve, s */
     double time;                /* fluid time, s */

@@ -203,6 +203,7 @@ static int cmp_edge(const void *x, const void *y) {
 void pl_fl_mesh_free(pl_fl_mesh *m) {
     free(m->xy); free(m->tri); free(m->tri_quad); free(m->area); free(m->bc);
     free(m->cell_start); free(m->cell_items); free(m->bedge);
+    free(m->tri_box); free(m->tri_cell0); free(m->edge_ang); free(m->edge_len);
     memset(m, 0, sizeof *m);
 }
 
@@ -478,6 +479,34 @@ pl_status pl_fl_mesh_build_grid(pl_fl_mesh *m) {
                 }
         }
         free(fill);
+    }
+    /* per-triangle boxes, first cells and edge angles/lengths: the same expressions the
+       per-grain loops used to evaluate for every candidate triangle at every update */
+    free(m->tri_box); free(m->tri_cell0); free(m->edge_ang); free(m->edge_len);
+    m->tri_box = malloc(sizeof(double) * 4 * (size_t)(m->ne > 0 ? m->ne : 1));
+    m->tri_cell0 = malloc(sizeof(int32_t) * 2 * (size_t)(m->ne > 0 ? m->ne : 1));
+    m->edge_ang = malloc(sizeof(double) * 3 * (size_t)(m->ne > 0 ? m->ne : 1));
+    m->edge_len = malloc(sizeof(double) * 3 * (size_t)(m->ne > 0 ? m->ne : 1));
+    if (!m->tri_box || !m->tri_cell0 || !m->edge_ang || !m->edge_len) return PL_ERR_NOMEM;
+    for (int e = 0; e < m->ne; e++) {
+        const int32_t *v = &m->tri[3 * e];
+        pl_vec2 a = m->xy[v[0]], b = m->xy[v[1]], c = m->xy[v[2]];
+        pl_vec2 lo = {fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y))};
+        pl_vec2 hi = {fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y))};
+        m->tri_box[4 * e] = lo.x;
+        m->tri_box[4 * e + 1] = lo.y;
+        m->tri_box[4 * e + 2] = hi.x;
+        m->tri_box[4 * e + 3] = hi.y;
+        int i0, j0, i1, j1;
+        pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1);
+        m->tri_cell0[2 * e] = i0;
+        m->tri_cell0[2 * e + 1] = j0;
+        for (int k = 0; k < 3; k++) {
+            pl_vec2 P = m->xy[v[k]], Q = m->xy[v[(k + 1) % 3]];
+            double ex = Q.x - P.x, ey = Q.y - P.y;
+            m->edge_ang[3 * e + k] = atan2(ey, ex);
+            m->edge_len[3 * e + k] = sqrt(ex * ex + ey * ey);
+        }
     }
     return PL_OK;
 }

@@ -171,6 +171,9 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
         int32_t *p = realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
         if (!p) return PL_ERR_NOMEM;
         f->body_cover_start = p;
+        double *q = realloc(f->cover_xyr, sizeof(double) * 3 * (size_t)nc);
+        if (!q) return PL_ERR_NOMEM;
+        f->cover_xyr = q;
         f->body_cap = nc;
     }
     for (int i = 0; i < b->n; i++) {
@@ -203,17 +206,32 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
                 size_t cell = (size_t)gj * m->gx + gi;
                 for (int k = m->cell_start[cell]; k < m->cell_start[cell + 1]; k++) {
                     int e = m->cell_items[k];
-                    const int32_t *v = &m->tri[3 * e];
-                    pl_vec2 t[3] = {m->xy[v[0]], m->xy[v[1]], m->xy[v[2]]};
-                    if (fmax(t[0].x, fmax(t[1].x, t[2].x)) < lo.x || fmin(t[0].x, fmin(t[1].x, t[2].x)) > hi.x ||
-                        fmax(t[0].y, fmax(t[1].y, t[2].y)) < lo.y || fmin(t[0].y, fmin(t[1].y, t[2].y)) > hi.y)
-                        continue;
+                    const double *tb = &m->tri_box[4 * e];
+                    if (tb[2] < lo.x || tb[0] > hi.x || tb[3] < lo.y || tb[1] > hi.y) continue;
                     /* an element spanning several cells is met once per cell: keep the first */
                     if (f->stamp[e] == gen) continue;
                     f->stamp[e] = gen;
+                    const int32_t *v = &m->tri[3 * e];
+                    pl_vec2 t[3] = {m->xy[v[0]], m->xy[v[1]], m->xy[v[2]]};
                     double a = 1; /* pixel method: computed per element below */
                     if (f->par.porosity_method == 0) {
-                        a = sh == PL_SHAPE_DISC ? pl_fl_tri_disc_area(t, c, r) : pl_fl_tri_poly_area(t, pv, pn);
+                        if (sh == PL_SHAPE_DISC) {
+                            /* distances of the centre to the edges decide the two cheap cases
+                               (wholly outside: no piece; wholly inside: the whole disc) before the
+                               closed form, which spends up to nine atan2 on a triangle */
+                            int inside = 1, outside = 0;
+                            for (int q = 0; q < 3; q++) {
+                                pl_vec2 P = t[q], Q = t[(q + 1) % 3];
+                                double dq = ((Q.x - P.x) * (c.y - P.y) - (Q.y - P.y) * (c.x - P.x)) /
+                                            m->edge_len[3 * e + q];
+                                if (dq <= -r) { outside = 1; break; }
+                                if (dq < r) inside = 0;
+                            }
+                            if (outside) continue;
+                            a = inside ? PL_FL_PI * r * r : pl_fl_tri_disc_area(t, c, r);
+                        } else {
+                            a = pl_fl_tri_poly_area(t, pv, pn);
+                        }
                         if (!(a > 0)) continue;
                         f->solid[e] += a;
                     }
@@ -223,6 +241,12 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
     }
     f->body_cover_start[b->n] = f->ncover;
     f->cover_bodies = b->n;
+    /* the state the covers belong to (the disc force reuses them while it is unchanged) */
+    for (int i = 0; i < b->n; i++) {
+        f->cover_xyr[3 * i] = b->pos[i].x;
+        f->cover_xyr[3 * i + 1] = b->pos[i].y;
+        f->cover_xyr[3 * i + 2] = b->radius[i];
+    }
     if (f->par.porosity_method == 1 && f->ncover > 0) {
         /* group pairs by element (counting sort) and pixellate each element once; the
            scratch arrays are kept in the model and grow only when needed */

@@ -157,6 +157,8 @@ static pl_status ensure_built(pl_world *w) {
     return PL_OK;
 }
 
+pl_status pl__fluid_ensure_built(pl_world *w) { return ensure_built(w); }
+
 static pl_status write_outputs(pl_world *w) {
     struct pl_fluid *f = w->fluid;
     if (f->par.geometry_flag && !f->geometry_written) {
@@ -384,8 +386,13 @@ static struct pl_fluid *built(pl_world *w) {
     struct pl_fluid *f = w->fluid;
     if (!f) return NULL;
     if (f->mesh_dirty || f->bc_dirty) {
+        /* a query must not change what the next step does: when it rebuilds changed boundary
+           conditions, the next step still makes the update the stepping hook makes after a
+           change (fluid_hook.c), as it would without the query */
+        const int bcs_only = !f->mesh_dirty && f->initialised;
         pl__fluid_read_params(w, &f->par);
         if (ensure_built(w) != PL_OK) return NULL;
+        if (bcs_only) f->refresh_pending = 1;
     }
     if (!f->initialised && pl__fluid_flag(w, "FLUIDS_ON", 0) != 0 && pl__fluid_flag(w, "FIRST_STEP_STATIC", 0) != 0) {
         if (pl__fluid_update(w, 0, 1) != PL_OK) return f; /* message in last_error; field stays */

@@ -10,4 +10,7 @@ pl_fl_bodies pl__fluid_world_bodies(const pl_world *w);
 /* One fluid update: porosity, permeability, assembly, solve (static when is_static). */
 pl_status pl__fluid_update(pl_world *w, double dt, int is_static);
 void pl__fluid_free_state(struct pl_fluid *f);
+/* Meshes and builds the system when the quads or lines changed (fluid_snapshot.c uses it to
+   bring a world's mesh and boundary conditions to those of a snapshot). */
+pl_status pl__fluid_ensure_built(pl_world *w);
 #endif

@@ -10,4 +10,5 @@ list(APPEND PL_ENGINE_SOURCES
   src/fluid/fluid_output.c
   src/fluid/fluid_hook.c
   src/fluid/fluid_consolidation.c
-  src/fluid/fluid_soil.c)
+  src/fluid/fluid_soil.c
+  src/fluid/fluid_snapshot.c)

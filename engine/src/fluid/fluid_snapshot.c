@@ -1,0 +1,362 @@
+/* Snapshots of the pore-fluid model, so that a world with a fluid can be rewound and stepped
+ * again bit for bit (issue 7; docs/fluid.md §8). Every field of struct pl_fluid is one of:
+ *
+ *   input, captured:   quads (mesh input: a differing set remeshes on restore), lines (boundary
+ *                      conditions, which hooks may clear and add at run time: a differing set
+ *                      rebuilds the system on restore), perm_user (FLUID_PERM 2 values),
+ *                      output file names
+ *   state, captured:   head, head_prev, perm, perm_assembled, solid, voidr, porosity, grad;
+ *                      the assembled matrices sys.kval/mval/mlump (kept while k_dirty = 0);
+ *                      consolidation src, stor, stor_assembled, ref_pos/ref_ang (positions at
+ *                      the last update: the next source is the displacement since then);
+ *                      covers (cover, body_cover_start, cover_xyr: the disc force reuses them
+ *                      while a disc has not moved); fcache (FLUID_FORCE_REUSE forces);
+ *                      flags and counters mesh_dirty, bc_dirty, built, k_dirty, have_solution,
+ *                      static_valid, initialised, steps_since (the fluid update's phase against
+ *                      the grain steps), time_since, time, out_time, src_active; the resolved
+ *                      parameters par and assembled_par (flags changed in between take effect
+ *                      at the next update); output progress geometry_written,
+ *                      pressures_started; statistics stats, t_source, last_src_abs
+ *   derived, rebuilt:  mesh (a function of the quads), sys pattern, prescribed nodes and
+ *                      CHOLMOD analysis (functions of mesh and lines), elem_bedge
+ *   cache, dropped:    the numeric factor sys.L (factorised = 0: the next solve refactorizes
+ *                      the same values with the same analysis, which gives the same factor
+ *                      bit for bit; test_fluid_snapshot checks it through the state hash)
+ *   scratch, live:     stamp/stamp_gen (only equality with the current generation matters),
+ *                      pix_*, vbar, bchord, sys.work, sys.rhs/sol/wy/we, msg, capacities
+ */
+#include "fluid/fluid_snapshot.h"
+#include "fluid/fluid_internal.h"
+#include "fluid/fluid_world.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct pl_fl_snapshot {
+    /* scalars */
+    int nq, nl;
+    int mesh_dirty, bc_dirty, built;
+    int nn, ne, nnz;            /* sizes of the mesh arrays below; nn = 0: no valid mesh */
+    int k_dirty, have_solution, static_valid, initialised, refresh_pending;
+    int64_t steps_since;
+    double time_since, time, out_time;
+    pl_fl_params par, assembled_par;
+    char geometry_file[256], pressures_file[256];
+    int geometry_written, pressures_started;
+    pl_fluid_stats stats;
+    int src_active;
+    double t_source, last_src_abs;
+    int ncover, cover_bodies, has_cover_start;
+    int ref_n, fcache_n;
+    int has_perm_user, has_cons;
+    /* arrays */
+    pl_fl_quad *quads;
+    pl_fl_line *lines;
+    double *head, *head_prev, *perm, *perm_user, *perm_assembled, *solid, *voidr, *porosity, *grad;
+    double *kval, *mval, *mlump;
+    double *src, *stor, *stor_assembled;
+    pl_vec2 *ref_pos;
+    double *ref_ang;
+    pl_fl_cover *cover;
+    int32_t *body_cover_start;
+    double *cover_xyr;
+    double *fcache;
+};
+
+void pl__fluid_snapshot_free(pl_fl_snapshot **zp) {
+    if (!zp || !*zp) return;
+    pl_fl_snapshot *z = *zp;
+    free(z->quads); free(z->lines);
+    free(z->head); free(z->head_prev); free(z->perm); free(z->perm_user); free(z->perm_assembled);
+    free(z->solid); free(z->voidr); free(z->porosity); free(z->grad);
+    free(z->kval); free(z->mval); free(z->mlump);
+    free(z->src); free(z->stor); free(z->stor_assembled); free(z->ref_pos); free(z->ref_ang);
+    free(z->cover); free(z->body_cover_start); free(z->cover_xyr); free(z->fcache);
+    free(z);
+    *zp = NULL;
+}
+
+/* Copy of n bytes (NULL for none); counts the bytes and flags a failed allocation. */
+static void *dup(const void *p, size_t n, size_t *bytes, int *fail) {
+    if (!p || n == 0) return NULL;
+    void *q = malloc(n);
+    if (!q) { *fail = 1; return NULL; }
+    memcpy(q, p, n);
+    *bytes += n;
+    return q;
+}
+
+pl_fl_snapshot *pl__fluid_snapshot(const struct pl_fluid *f, size_t *bytes) {
+    pl_fl_snapshot *z = calloc(1, sizeof *z);
+    if (!z) return NULL;
+    size_t b = sizeof *z;
+    int fail = 0;
+    z->nq = f->nq;
+    z->nl = f->nl;
+    z->quads = dup(f->quads, sizeof(pl_fl_quad) * (size_t)f->nq, &b, &fail);
+    z->lines = dup(f->lines, sizeof(pl_fl_line) * (size_t)f->nl, &b, &fail);
+    z->mesh_dirty = f->mesh_dirty;
+    z->bc_dirty = f->bc_dirty;
+    z->built = f->built;
+    if (f->built && !f->mesh_dirty && f->head && f->sys.kval) {
+        const size_t nn = (size_t)f->mesh.nn, ne = (size_t)f->mesh.ne, nnz = (size_t)f->sys.nnz;
+        z->nn = f->mesh.nn;
+        z->ne = f->mesh.ne;
+        z->nnz = f->sys.nnz;
+        z->head = dup(f->head, sizeof(double) * nn, &b, &fail);
+        z->head_prev = dup(f->head_prev, sizeof(double) * nn, &b, &fail);
+        z->perm = dup(f->perm, sizeof(double) * ne, &b, &fail);
+        z->has_perm_user = f->perm_user != NULL;
+        z->perm_user = dup(f->perm_user, sizeof(double) * ne, &b, &fail);
+        z->perm_assembled = dup(f->perm_assembled, sizeof(double) * ne, &b, &fail);
+        z->solid = dup(f->solid, sizeof(double) * ne, &b, &fail);
+        z->voidr = dup(f->voidr, sizeof(double) * ne, &b, &fail);
+        z->porosity = dup(f->porosity, sizeof(double) * ne, &b, &fail);
+        z->grad = dup(f->grad, sizeof(double) * 2 * ne, &b, &fail);
+        z->kval = dup(f->sys.kval, sizeof(double) * nnz, &b, &fail);
+        z->mval = dup(f->sys.mval, sizeof(double) * nnz, &b, &fail);
+        z->mlump = dup(f->sys.mlump, sizeof(double) * nn, &b, &fail);
+        z->has_cons = f->src != NULL;
+        if (f->src) {
+            z->src = dup(f->src, sizeof(double) * nn, &b, &fail);
+            z->stor = dup(f->stor, sizeof(double) * ne, &b, &fail);
+            z->stor_assembled = dup(f->stor_assembled, sizeof(double) * ne, &b, &fail);
+        }
+        z->ncover = f->ncover;
+        z->cover_bodies = f->cover_bodies;
+        z->cover = dup(f->cover, sizeof(pl_fl_cover) * (size_t)f->ncover, &b, &fail);
+        z->has_cover_start = f->body_cover_start != NULL;
+        if (f->body_cover_start) {
+            z->body_cover_start = dup(f->body_cover_start, sizeof(int32_t) * ((size_t)f->cover_bodies + 1), &b, &fail);
+            z->cover_xyr = dup(f->cover_xyr, sizeof(double) * 3 * (size_t)f->cover_bodies, &b, &fail);
+        }
+    }
+    /* the consolidation reference exists without the arrays above after a soil_reset */
+    z->ref_n = f->ref_pos ? f->ref_n : 0;
+    z->ref_pos = dup(f->ref_pos, sizeof(pl_vec2) * (size_t)z->ref_n, &b, &fail);
+    z->ref_ang = dup(f->ref_ang, sizeof(double) * (size_t)z->ref_n, &b, &fail);
+    z->fcache_n = f->fcache ? f->fcache_n : 0;
+    z->fcache = dup(f->fcache, sizeof(double) * 3 * (size_t)z->fcache_n, &b, &fail);
+    z->k_dirty = f->k_dirty;
+    z->have_solution = f->have_solution;
+    z->static_valid = f->static_valid;
+    z->initialised = f->initialised;
+    z->refresh_pending = f->refresh_pending;
+    z->steps_since = f->steps_since;
+    z->time_since = f->time_since;
+    z->time = f->time;
+    z->out_time = f->out_time;
+    z->par = f->par;
+    z->assembled_par = f->assembled_par;
+    memcpy(z->geometry_file, f->geometry_file, sizeof z->geometry_file);
+    memcpy(z->pressures_file, f->pressures_file, sizeof z->pressures_file);
+    z->geometry_written = f->geometry_written;
+    z->pressures_started = f->pressures_started;
+    z->stats = f->stats;
+    z->src_active = f->src_active;
+    z->t_source = f->t_source;
+    z->last_src_abs = f->last_src_abs;
+    if (fail) {
+        pl__fluid_snapshot_free(&z);
+        return NULL;
+    }
+    if (bytes) *bytes = b;
+    return z;
+}
+
+/* Grows *p to hold at least need elements of size elem (keeps the contents). */
+static int grow(void **p, int *cap, int need, size_t elem) {
+    if (need <= *cap && *p) return 1;
+    int nc = need + 64;
+    void *q = realloc(*p, elem * (size_t)nc);
+    if (!q) return 0;
+    *p = q;
+    *cap = nc;
+    return 1;
+}
+
+/* The mesh is a function of the quads' corners and divisions (the ids and anisotropies do
+   not change it); the prescribed nodes and flux loads a function of mesh and lines. */
+static int same_quads(const struct pl_fluid *f, const pl_fl_snapshot *z) {
+    if (f->nq != z->nq) return 0;
+    for (int k = 0; k < f->nq; k++) {
+        const pl_fl_quad *a = &f->quads[k], *b = &z->quads[k];
+        if (a->ndivx != b->ndivx || a->ndivy != b->ndivy) return 0;
+        for (int c = 0; c < 4; c++)
+            if (a->c[c].x != b->c[c].x || a->c[c].y != b->c[c].y) return 0;
+    }
+    return 1;
+}
+
+static int same_lines(const struct pl_fluid *f, const pl_fl_snapshot *z) {
+    if (f->nl != z->nl) return 0;
+    for (int k = 0; k < f->nl; k++) {
+        const pl_fl_line *a = &f->lines[k], *b = &z->lines[k];
+        if (a->a.x != b->a.x || a->a.y != b->a.y || a->b.x != b->b.x || a->b.y != b->b.y || a->value != b->value ||
+            a->kind != b->kind)
+            return 0;
+    }
+    return 1;
+}
+
+/* memcpy of n elements; nothing (and no null pointer handed to memcpy) when n = 0 */
+#define COPY(dst, src, n)                                                    \
+    do {                                                                     \
+        if ((n) > 0) memcpy((dst), (src), sizeof(*(dst)) * (size_t)(n));    \
+    } while (0)
+
+pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
+    struct pl_fluid *f = w->fluid;
+    if (!f) { /* removed by restoring an earlier snapshot taken before the first fluid quad */
+        f = calloc(1, sizeof *f);
+        if (!f) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+        f->mesh_dirty = 1;
+        f->par = pl_fl_default_params();
+        w->fluid = f;
+    }
+    const int valid = z->nn > 0;
+    const int live_mesh = f->built && !f->mesh_dirty && f->head && f->sys.kval;
+    const int keep_mesh = valid && live_mesh && same_quads(f, z);
+    const int keep_bcs = keep_mesh && !f->bc_dirty && !z->bc_dirty && same_lines(f, z);
+    /* input: quads and lines */
+    if (!grow((void **)&f->quads, &f->qcap, z->nq, sizeof *f->quads) ||
+        !grow((void **)&f->lines, &f->lcap, z->nl, sizeof *f->lines))
+        return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+    COPY(f->quads, z->quads, z->nq);
+    f->nq = z->nq;
+    COPY(f->lines, z->lines, z->nl);
+    f->nl = z->nl;
+    f->par = z->par; /* remeshing sets the initial heads from the elevation */
+    if (valid) {
+        if (!keep_mesh) f->mesh_dirty = 1;
+        else if (!keep_bcs && !z->bc_dirty) f->bc_dirty = 1;
+        if (f->mesh_dirty || f->bc_dirty) {
+            pl_status st = pl__fluid_ensure_built(w);
+            if (st != PL_OK) return st;
+        }
+        if (f->mesh.nn != z->nn || f->mesh.ne != z->ne || f->sys.nnz != z->nnz)
+            return pl__error(w, PL_ERR_STATE, "restore: the fluid mesh (%d nodes, %d triangles) does not match the "
+                                              "snapshot's (%d nodes, %d triangles)",
+                             f->mesh.nn, f->mesh.ne, z->nn, z->ne);
+        const int nn = z->nn, ne = z->ne;
+        COPY(f->head, z->head, nn);
+        COPY(f->head_prev, z->head_prev, nn);
+        COPY(f->perm, z->perm, ne);
+        COPY(f->perm_assembled, z->perm_assembled, ne);
+        COPY(f->solid, z->solid, ne);
+        COPY(f->voidr, z->voidr, ne);
+        COPY(f->porosity, z->porosity, ne);
+        COPY(f->grad, z->grad, 2 * ne);
+        if (z->has_perm_user) {
+            if (!f->perm_user) f->perm_user = malloc(sizeof(double) * (size_t)ne);
+            if (!f->perm_user) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+            COPY(f->perm_user, z->perm_user, ne);
+        } else {
+            free(f->perm_user);
+            f->perm_user = NULL;
+        }
+        COPY(f->sys.kval, z->kval, z->nnz);
+        COPY(f->sys.mval, z->mval, z->nnz);
+        COPY(f->sys.mlump, z->mlump, nn);
+        /* consolidation arrays exist from the first update with FLUID_CONSOLIDATION on; their
+           presence alone changes the assembly (storage per element) */
+        if (z->has_cons) {
+            if (!f->src && pl_fl_consolidation_alloc(f) != PL_OK)
+                return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+            COPY(f->src, z->src, nn);
+            COPY(f->stor, z->stor, ne);
+            COPY(f->stor_assembled, z->stor_assembled, ne);
+        } else if (f->src) {
+            pl_fl_consolidation_free(f);
+        }
+        if (!grow((void **)&f->cover, &f->cover_cap, z->ncover, sizeof *f->cover))
+            return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+        COPY(f->cover, z->cover, z->ncover);
+        f->ncover = z->ncover;
+        if (z->has_cover_start) {
+            if (z->cover_bodies + 1 > f->body_cap || !f->body_cover_start || !f->cover_xyr) {
+                const int nc = z->cover_bodies + 1 + 64;
+                int32_t *p = realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
+                if (p) f->body_cover_start = p;
+                double *q = realloc(f->cover_xyr, sizeof(double) * 3 * (size_t)nc);
+                if (q) f->cover_xyr = q;
+                if (!p || !q) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+                f->body_cap = nc;
+            }
+            COPY(f->body_cover_start, z->body_cover_start, z->cover_bodies + 1);
+            COPY(f->cover_xyr, z->cover_xyr, 3 * z->cover_bodies);
+        }
+        f->cover_bodies = z->cover_bodies;
+    } else {
+        /* the snapshot's model had no current mesh: build it at the next use, as it would */
+        f->mesh_dirty = 1;
+        f->cover_bodies = 0;
+        f->ncover = 0;
+    }
+    /* consolidation reference (also set by soil_reset without the consolidation arrays) */
+    if (z->ref_n > 0) {
+        if (z->ref_n > f->ref_cap || !f->ref_pos || !f->ref_ang) {
+            const int nc = z->ref_n + 64;
+            pl_vec2 *p = realloc(f->ref_pos, sizeof(pl_vec2) * (size_t)nc);
+            if (p) f->ref_pos = p;
+            double *a = realloc(f->ref_ang, sizeof(double) * (size_t)nc);
+            if (a) f->ref_ang = a;
+            if (!p || !a) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+            f->ref_cap = nc;
+        }
+        COPY(f->ref_pos, z->ref_pos, z->ref_n);
+        COPY(f->ref_ang, z->ref_ang, z->ref_n);
+    }
+    f->ref_n = z->ref_n;
+    if (z->fcache_n > 0) {
+        if (!grow((void **)&f->fcache, &f->fcache_cap, z->fcache_n, 3 * sizeof *f->fcache))
+            return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+        COPY(f->fcache, z->fcache, 3 * z->fcache_n);
+    }
+    f->fcache_n = z->fcache_n;
+    /* flags, phase, parameters */
+    if (valid) {
+        f->mesh_dirty = z->mesh_dirty;
+        f->bc_dirty = z->bc_dirty;
+        f->built = z->built;
+    }
+    f->k_dirty = z->k_dirty;
+    f->have_solution = z->have_solution;
+    f->static_valid = z->static_valid;
+    f->initialised = z->initialised;
+    f->refresh_pending = z->refresh_pending;
+    f->steps_since = z->steps_since;
+    f->time_since = z->time_since;
+    f->time = z->time;
+    f->out_time = z->out_time;
+    f->par = z->par;
+    f->assembled_par = z->assembled_par;
+    memcpy(f->geometry_file, z->geometry_file, sizeof f->geometry_file);
+    memcpy(f->pressures_file, z->pressures_file, sizeof f->pressures_file);
+    f->geometry_written = z->geometry_written;
+    f->pressures_started = z->pressures_started;
+    f->stats = z->stats;
+    f->src_active = z->src_active;
+    f->t_source = z->t_source;
+    f->last_src_abs = z->last_src_abs;
+    f->sys.factorised = 0; /* the live factor is of another matrix: refactorize at the next solve */
+    return PL_OK;
+}
+
+uint64_t pl__fluid_hash(const struct pl_fluid *f, uint64_t h) {
+    if (!f) return h;
+    h = pl_hash_bytes(h, &f->initialised, sizeof f->initialised);
+    h = pl_hash_bytes(h, &f->refresh_pending, sizeof f->refresh_pending);
+    h = pl_hash_bytes(h, &f->steps_since, sizeof f->steps_since);
+    h = pl_hash_bytes(h, &f->time_since, sizeof f->time_since);
+    h = pl_hash_bytes(h, &f->time, sizeof f->time);
+    if (f->built && !f->mesh_dirty && f->head) {
+        h = pl_hash_bytes(h, f->head, sizeof(double) * (size_t)f->mesh.nn);
+        h = pl_hash_bytes(h, f->perm, sizeof(double) * (size_t)f->mesh.ne);
+        h = pl_hash_bytes(h, f->solid, sizeof(double) * (size_t)f->mesh.ne);
+        if (f->src) h = pl_hash_bytes(h, f->src, sizeof(double) * (size_t)f->mesh.nn);
+    }
+    if (f->ref_pos) h = pl_hash_bytes(h, f->ref_pos, sizeof(pl_vec2) * (size_t)f->ref_n);
+    if (f->par.force_reuse && f->fcache) h = pl_hash_bytes(h, f->fcache, sizeof(double) * 3 * (size_t)f->fcache_n);
+    return h;
+}
