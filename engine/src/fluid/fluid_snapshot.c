@@ -12,8 +12,10 @@
  *                      covers (cover, body_cover_start, cover_xyr: the disc force reuses them
  *                      while a disc has not moved); fcache (FLUID_FORCE_REUSE forces);
  *                      flags and counters mesh_dirty, bc_dirty, built, k_dirty, have_solution,
- *                      static_valid, initialised, steps_since (the fluid update's phase against
- *                      the grain steps), time_since, time, out_time, src_active; the resolved
+ *                      static_valid, initialised, refresh_pending (a query applied changed
+ *                      lines: the next step still restarts the fluid), steps_since (the fluid
+ *                      update's phase against the grain steps), time_since, time, out_time,
+ *                      src_active; the resolved
  *                      parameters par and assembled_par (flags changed in between take effect
  *                      at the next update); output progress geometry_written,
  *                      pressures_started; statistics stats, t_source, last_src_abs

@@ -119,6 +119,9 @@ static pl_status ensure_built(pl_world *w) {
     struct pl_fluid *f = w->fluid;
     if (!f) return pl__error(w, PL_ERR_STATE, "fluid: no fluid model (add a fluid quad first)");
     pl_status st;
+    /* a step, a solve or a setter building now takes over what a query applied before it:
+       without the query it would have applied the changed lines itself (built() below) */
+    f->refresh_pending = 0;
     if (f->mesh_dirty) {
         pl__fluid_free_state(f);
         pl_fl_system_free(&f->sys);
