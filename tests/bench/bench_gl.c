@@ -16,6 +16,7 @@
 #include "backend_cairo.h"
 #include "draw_world.h"
 #include "osmesa_context.h"
+#include "render_scenes.h"
 
 static double now(void)
 {
@@ -74,32 +75,7 @@ static void build_scene(pl_render_scene *s, int nx, int ny)
     s->lo = (pl_vec2){-1.0, -1.0};
     s->hi = (pl_vec2){nx * 1.0 + 1.0, ny * 0.866 + 1.0};
     s->time = 12.345;
-    int gx = nx, gy = ny; /* one grid cell (2 triangles) per grain */
-    int nn = (gx + 1) * (gy + 1), nt = 2 * gx * gy;
-    pl_vec2 *nodes = malloc((size_t)nn * sizeof *nodes);
-    double *val = malloc((size_t)nn * sizeof *val);
-    int *tris = malloc((size_t)nt * 3 * sizeof *tris);
-    pl_vec2 *vel = malloc((size_t)nt * sizeof *vel);
-    for (int j = 0; j <= gy; j++)
-        for (int i = 0; i <= gx; i++) {
-            int q = j * (gx + 1) + i;
-            nodes[q] = (pl_vec2){s->hi.x * i / gx, s->hi.y * j / gy};
-            val[q] = 9810.0 * (s->hi.y - nodes[q].y) + 3000.0 * sin(0.05 * i) * cos(0.08 * j);
-        }
-    int t = 0;
-    for (int j = 0; j < gy; j++)
-        for (int i = 0; i < gx; i++) {
-            int a = j * (gx + 1) + i, b = a + 1, c = a + gx + 1, d = c + 1;
-            int q[6] = {a, b, d, a, d, c};
-            memcpy(tris + 3 * t, q, sizeof q);
-            vel[t] = vel[t + 1] = (pl_vec2){1e-4 * cos(0.05 * i), 1e-4 * sin(0.08 * j)};
-            t += 2;
-        }
-    pl_render_scene_set_fluid(s, nodes, val, nn, tris, vel, nt, 2);
-    free(nodes);
-    free(val);
-    free(tris);
-    free(vel);
+    set_grid_field(s, nx, ny, 0.05, 0.08, 1e-4); /* one grid cell (2 triangles) per grain */
 }
 
 int main(int argc, char **argv)

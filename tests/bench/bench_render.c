@@ -78,32 +78,7 @@ static void build_scene(pl_render_scene *s) {
     s->hi = (pl_vec2){NX * 1.0 + 1.0, NY * 0.866 + 1.0};
     s->time = 12.345;
     /* 40,000 fluid triangles on a 200 x 100 grid over the packing */
-    int nn = (NX + 1) * (NY + 1), nt = 2 * NX * NY;
-    pl_vec2 *nodes = malloc((size_t)nn * sizeof *nodes);
-    double *val = malloc((size_t)nn * sizeof *val);
-    int *tris = malloc((size_t)nt * 3 * sizeof *tris);
-    pl_vec2 *vel = malloc((size_t)nt * sizeof *vel);
-    for (int j = 0; j <= NY; j++)
-        for (int i = 0; i <= NX; i++) {
-            int n = j * (NX + 1) + i;
-            nodes[n] = (pl_vec2){s->hi.x * i / NX, s->hi.y * j / NY};
-            val[n] = 9810.0 * (s->hi.y - nodes[n].y) + 3000.0 * sin(0.05 * i) * cos(0.08 * j);
-        }
-    int t = 0;
-    for (int j = 0; j < NY; j++)
-        for (int i = 0; i < NX; i++) {
-            int a = j * (NX + 1) + i, b = a + 1, c = a + NX + 1, d = c + 1;
-            int q[6] = {a, b, d, a, d, c};
-            memcpy(tris + 3 * t, q, sizeof q);
-            vel[t] = (pl_vec2){1e-4 * cos(0.05 * i), 1e-4 * sin(0.08 * j)};
-            vel[t + 1] = vel[t];
-            t += 2;
-        }
-    pl_render_scene_set_fluid(s, nodes, val, nn, tris, vel, nt, 2);
-    free(nodes);
-    free(val);
-    free(tris);
-    free(vel);
+    set_grid_field(s, NX, NY, 0.05, 0.08, 1e-4);
     s->material_count = 0;
 }
 

@@ -5,6 +5,7 @@
 #include "render_scenes.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -258,5 +259,40 @@ int render_case(int i, const render_tweak *tw, pl_draw_list *dl, char *err, size
     pl_render_scene_free(&s);
     pl_draw_list_free(&overlay);
     pl_world_destroy(&w);
+    return rc;
+}
+
+int set_grid_field(pl_render_scene *s, int gx, int gy, double kx, double ky, double vscale)
+{
+    int nn = (gx + 1) * (gy + 1), nt = 2 * gx * gy;
+    pl_vec2 *nodes = malloc((size_t)nn * sizeof *nodes);
+    double *val = malloc((size_t)nn * sizeof *val);
+    int *tris = malloc((size_t)nt * 3 * sizeof *tris);
+    pl_vec2 *vel = malloc((size_t)nt * sizeof *vel);
+    int rc = -1;
+    if (nodes && val && tris && vel) {
+        for (int j = 0; j <= gy; j++)
+            for (int i = 0; i <= gx; i++) {
+                int n = j * (gx + 1) + i;
+                nodes[n] = (pl_vec2){s->hi.x * i / gx, s->hi.y * j / gy};
+                val[n] = 9810.0 * (s->hi.y - nodes[n].y) + 3000.0 * sin(kx * i) * cos(ky * j);
+            }
+        int t = 0;
+        for (int j = 0; j < gy; j++)
+            for (int i = 0; i < gx; i++) {
+                int a = j * (gx + 1) + i, b = a + 1, c = a + gx + 1, d = c + 1;
+                int q[6] = {a, b, d, a, d, c};
+                memcpy(tris + 3 * t, q, sizeof q);
+                vel[t] = vscale == 0 ? (pl_vec2){0, 0} : (pl_vec2){vscale * cos(kx * i), vscale * sin(ky * j)};
+                vel[t + 1] = vel[t];
+                t += 2;
+            }
+        pl_render_scene_set_fluid(s, nodes, val, nn, tris, vel, nt, 2);
+        rc = 0;
+    }
+    free(nodes);
+    free(val);
+    free(tris);
+    free(vel);
     return rc;
 }

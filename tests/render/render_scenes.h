@@ -20,6 +20,12 @@ pl_world *make_moving_world(void);
  * PL_FLUID_EXCESS_PRESSURE (3). */
 int set_synthetic_fluid(pl_render_scene *s, int field);
 
+/* A structured pressure field for benchmarks and rasterizer checks: gx x gy cells (two
+ * triangles each) over [0, s->hi], value 9810 (hi.y - y) + 3000 sin(kx i) cos(ky j) as
+ * PL_FLUID_PRESSURE, Darcy velocity vscale (cos(kx i), sin(ky j)) per cell (exactly zero when
+ * vscale is 0). Returns 0, or -1 when out of memory. */
+int set_grid_field(pl_render_scene *s, int gx, int gy, double kx, double ky, double vscale);
+
 /* Golden cases. */
 typedef struct render_case {
     const char *name;    /* golden file tests/golden/<name>.png */

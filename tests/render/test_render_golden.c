@@ -177,27 +177,7 @@ static void dense_scene(pl_render_scene *s) {
         }
     s->lo = (pl_vec2){-1.0, -1.0};
     s->hi = (pl_vec2){NX + 0.5, NY * 0.866 + 0.5};
-    enum { MX = 24, MY = 12 };
-    pl_vec2 nodes[(MX + 1) * (MY + 1)];
-    double val[(MX + 1) * (MY + 1)];
-    int tris[2 * MX * MY * 3];
-    pl_vec2 vel[2 * MX * MY];
-    for (int j = 0; j <= MY; j++)
-        for (int i = 0; i <= MX; i++) {
-            int n = j * (MX + 1) + i;
-            nodes[n] = (pl_vec2){s->hi.x * i / MX, s->hi.y * j / MY};
-            val[n] = 9810.0 * (s->hi.y - nodes[n].y) + 3000.0 * sin(0.3 * i) * cos(0.4 * j);
-        }
-    int t = 0;
-    for (int j = 0; j < MY; j++)
-        for (int i = 0; i < MX; i++) {
-            int a = j * (MX + 1) + i, b = a + 1, c = a + MX + 1, d = c + 1;
-            int q[6] = {a, b, d, a, d, c};
-            memcpy(tris + 3 * t, q, sizeof q);
-            vel[t] = vel[t + 1] = (pl_vec2){0, 0};
-            t += 2;
-        }
-    pl_render_scene_set_fluid(s, nodes, val, (MX + 1) * (MY + 1), tris, vel, t, 2);
+set_grid_field(s, 24, 12, 0.3, 0.4, 0);
 }
 
 /* Renders the dense scene with the given layers by the backend's own rasterizers and by cairo
