@@ -1,4 +1,5 @@
 #include "cli_common.h"
+#include "scene_chart.h"
 #include "context.h"
 #include "scene_overlay.h"
 #include "scene_render.h"
@@ -37,6 +38,7 @@ pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir)
         fprintf(stderr, "porelab: out of memory while creating the Lua state\n");
         return NULL;
     }
+    pl_scene_register_chart(s);
     if (pl_scene_load(s) != 0) {
         pl_cli_print_scene_error(o, s);
         pl_scene_destroy(&s);

@@ -1,5 +1,6 @@
 /* Scene, stepping, parameters and the replay log of the window (see window_sim.h). */
 #include "window_sim.h"
+#include "scene_chart.h"
 #include "scene_render.h"
 
 #include <math.h>
@@ -136,6 +137,7 @@ static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
     }
     struct timespec mt;
     get_mtime(sim->o->positional[0], &mt);
+    pl_scene_register_chart(s);
     if (pl_scene_load(s) != 0) {
         snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(s));
         pl_scene_destroy(&s);

@@ -184,3 +184,13 @@ set_tests_properties(cli_still_matches_run PROPERTIES LABELS cli TIMEOUT 120)
 add_test(NAME cli_flags_documented COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
          -DDOC=${CMAKE_SOURCE_DIR}/docs/scene-reference.md -P ${PL_CLI_DIR}/flags_doc.cmake)
 set_tests_properties(cli_flags_documented PROPERTIES LABELS cli TIMEOUT 60)
+
+# porelab.chart: a scene turns its series into a PLplot chart in its output folder; bad series
+# and writes outside the output folder are refused with the file, line and the reason.
+pl_cli_test(scene_chart RC 0 ARGS run tests/cli/lua/chart.lua --quiet --out ${PL_CLI_OUT}/chart
+  EXPECT_FILE ${PL_CLI_OUT}/chart/fall.png FILE_MATCH "PNG")
+pl_cli_test(bad_chart RC 1 ARGS run ${PL_BAD}/bad_chart.lua --quiet --out ${PL_CLI_OUT}/bad_chart
+  MATCH "bad_chart.lua:2: chart: series\\[1\\]: x and y must have the same length \\(got 3 and 2\\)")
+pl_cli_test(sandbox_chart_outside RC 1
+  ARGS run ${PL_BAD}/chart_outside.lua --quiet --out ${PL_CLI_OUT}/chart_outside
+  MATCH "chart_outside.lua:2: chart: writing '../../escape.png' is not allowed")
