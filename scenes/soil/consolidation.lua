@@ -277,6 +277,23 @@ return {
       end
     end
     print(string.format("worst |mean U - U_Terzaghi| / U_Terzaghi = %.1f%%", 100 * worst))
+    -- chart: each column's degree of consolidation U = (s - s0)/(s_final - s0) against
+    -- T_v = c_v t / H^2, beside Terzaghi's U(T_v)
+    local series = {}
+    for c, col in ipairs(cols) do
+      local r, xs, ys = res[c], {}, {}
+      for _, h in ipairs(col.hist) do
+        local Tv = r.cv * h[1] / (r.H * r.H)
+        if Tv > 0 and Tv <= 1 then xs[#xs + 1] = Tv; ys[#ys + 1] = (h[2] - r.s0) / (r.sf - r.s0) end
+      end
+      if #xs > 0 then series[#series + 1] = { name = "column " .. c, x = xs, y = ys, style = "points" } end
+    end
+    local tx, ty = {}, {}
+    for k = 1, 100 do tx[k] = k / 100; ty[k] = U_series(k / 100) end
+    series[#series + 1] = { name = "Terzaghi U(T_v)", x = tx, y = ty, style = "dashed", color = "#222222" }
+    porelab.chart { file = "consolidation_U.png", title = "Consolidation of grain columns against Terzaghi",
+                    xlabel = "time factor T_v = c_v t / H^2", ylabel = "degree of consolidation U",
+                    series = series, xrange = { 0, 1 }, yrange = { 0, 1.1 }, legend = "bottom right" }
     if world:time() >= T_END - 1e-6 then
       assert(not fail, fail)
     end

@@ -197,6 +197,9 @@ return {
         local g = tk.g
         log:row(t, k, g.free.du, g.free.sv0, g.free.ru, g.free.mean, g.layer.mean, g.under.mean, by,
                 math.deg(tk.building:angle()), py)
+        tk.hist = tk.hist or { t = {}, ru = {} }
+        tk.hist.t[#tk.hist.t + 1] = t
+        tk.hist.ru[#tk.hist.ru + 1] = g.free.mean
       end
     end
     if t >= T_SHAKE - T_REF and not shaking then
@@ -226,6 +229,18 @@ return {
                                     math.deg(tk.building:angle()), 1000 * (py - (tk.pipe_y0 or py)))
     end
     print(table.concat(out, "\n"))
+    -- chart of the free-field r_u (mean over a shaking period) of the three tanks
+    local series = {}
+    for _, tk in ipairs(tanks) do
+      if tk.hist and #tk.hist.t > 0 then
+        series[#series + 1] = { name = tk.name, x = tk.hist.t, y = tk.hist.ru, style = "line" }
+      end
+    end
+    if #series > 0 then
+      porelab.chart { file = "ru.png", title = "Excess pore pressure ratio in the free field",
+                      xlabel = "time (s)", ylabel = "r_u = du / sigma'_v0 (mean over a period)",
+                      series = series, legend = "top left" }
+    end
     local fs, ss = world:fluid_stats(), world:soil_stats()
     print(string.format("fluid time: porosity %.2f s, assembly %.2f s, factorization %.2f s, solve %.2f s, forces %.2f s, "
                         .. "consolidation source %.2f s (%d updates)", fs.t_porosity, fs.t_assembly, fs.t_factor,
