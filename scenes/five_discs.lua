@@ -24,42 +24,68 @@ local discs = {
   w:disc { center = { 1.5, 1 + 2 * dy }, radius = 1, material = rock },    -- disc 5
 }
 
--- Theoretical forces of Table 2.2 (rigid discs in the initial geometry), N.
+-- Theoretical forces of Table 2.2 (rigid discs in the initial geometry), N; keys name the
+-- lower-numbered disc first, walls last.
 local theory = { ["1-w1"] = 188495.6, ["1-w2"] = 128247.7, ["2-w1"] = 188495.6,
-                 ["2-w3"] = 128247.7, ["3-1"] = 170996.9, ["3-2"] = 170996.9,
+                 ["2-w3"] = 128247.7, ["1-3"] = 170996.9, ["2-3"] = 170996.9,
                  ["3-4"] = 113997.9, ["3-5"] = 113997.9, ["4-w2"] = 85498.4,
                  ["5-w3"] = 85498.4 }
 
-local function label(world, i)
-  for k, d in ipairs(discs) do if d:index() == i then return tostring(k) end end
-  return "w" .. tostring(i) -- walls are bodies 1..3
+local function name(i)
+  for k, d in ipairs(discs) do if d:index() == i then return tostring(k), k end end
+  return "w" .. tostring(i), 100 + i -- walls are bodies 1..3
 end
 
+local function key(c)
+  local a, ka = name(c.a)
+  local b, kb = name(c.b)
+  if ka > kb then a, b = b, a end
+  return a .. "-" .. b
+end
+
+-- The picture is seed 003's Fig. 2.13(a): force chains between the centres (width
+-- proportional to the normal force, 200 kN at full width) and, at each contact, the computed
+-- normal force beside the rigid-disc value of Table 2.2 in parentheses, kN
+--   porelab still scenes/five_discs.lua --at 5 -o five.png   (tools/figures.sh)
 return {
   world = w,
   render = {
-    size = { 480, 520 }, force_scale = 2e5, title = "Five discs (Tan 1990)",
-    -- labels as in the seed's Figure 2.12, drawn over each frame (the "overlay" layer)
+    size = { 760, 820 },
+    camera = { -3.2, -0.9, 3.2, 6.2 },
+    force_scale = 2e5,
+    force_max_width = 16,
+    force_threshold = 0,
+    layers = "bodies,forces,overlay,title,time",
+    title = "Five settled discs: contact forces (kN)",
+    colors = { rock = "#d9cbb0" },
     overlay = function(world)
       local items = {
-        { text = "wall 1", at = { 0, 0.3 }, anchor = "center" },
-        { text = "wall 2", at = { -2.6, 5 }, anchor = "right" },
-        { text = "wall 3", at = { 2.6, 5 }, anchor = "left" },
+        { text = "wall 1", at = { 0, -0.35 }, anchor = "center", size = 15 },
+        { text = "wall 2", at = { -2.65, 5.6 }, anchor = "right", size = 15 },
+        { text = "wall 3", at = { 2.65, 5.6 }, anchor = "left", size = 15 },
+        { text = "computed (rigid discs, Tan 1990 Table 2.2)", at = { 0, 5.75 },
+          anchor = "center", size = 15 },
       }
       for k, d in ipairs(discs) do
         local x, y = d:position()
-        items[#items + 1] = { text = tostring(k), at = { x, y }, anchor = "center", size = 18 }
+        items[#items + 1] = { text = tostring(k), at = { x, y + 0.45 }, anchor = "center",
+                              size = 22 }
+      end
+      for _, c in ipairs(world:contacts()) do
+        local ref = theory[key(c)]
+        local label = string.format("%.1f", c.fn / 1000)
+        if ref then label = label .. string.format(" (%.1f)", ref / 1000) end
+        items[#items + 1] = { text = label, at = { c.point[1] or c.point.x, c.point[2] or c.point.y },
+                              anchor = "center", size = 15, color = "#7a1010" }
       end
       return items
     end,
   },
   on_finish = function(world)
     for _, c in ipairs(world:contacts()) do
-      local a, b = label(world, c.a), label(world, c.b)
-      if a:sub(1, 1) == "w" then a, b = b, a end
-      local key = theory[a .. "-" .. b] and a .. "-" .. b or b .. "-" .. a
-      local ref = theory[key]
-      print(string.format("disc %-5s %10.1f N   theory %10s N", key, c.fn,
+      local k = key(c)
+      local ref = theory[k]
+      print(string.format("disc %-5s %10.1f N   theory %10s N", k, c.fn,
                           ref and string.format("%.1f", ref) or "-"))
     end
   end,

@@ -25,10 +25,11 @@ trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
 cd "$root"
 
-still() { # scene time file layers...
+still() { # scene (under scenes/figures/, or a path ending in .lua) time file layers...
   scene=$1 at=$2 file=$3
   shift 3
-  "$porelab" still "scenes/figures/$scene.lua" --at "$at" -o "$out/$file" --out "$tmp/$scene" \
+  case $scene in *.lua) path=$scene; scene=$(basename "$scene" .lua) ;; *) path=scenes/figures/$scene.lua ;; esac
+  "$porelab" still "$path" --at "$at" -o "$out/$file" --out "$tmp/$scene" \
     --quiet "$@"
   echo "wrote docs/figures/$file"
 }
@@ -44,6 +45,6 @@ still buoyancy_heavy 53 seed000-fig4-8-buoyancy-heavy.png
 # seed 000 §4.3: pressure wave, finite elements (4 to 64 elements) against erfc
 "$build/tests/seed_wave_figures" "$out" | sed "s|$root/||"
 # seed 003 §2.2.5.2: five discs settled under gravity, contact forces against Table 2.2
-still five_discs_forces 5 seed003-fig2-13-five-discs.png
+still scenes/five_discs.lua 5 seed003-fig2-13-five-discs.png
 # force chains of a settled polygon packing (seed 004 grains)
 still polygon_packing 1.5 polygon-packing-force-chains.png

@@ -215,32 +215,36 @@ static inline double snap(double v) {
     return ifloor(v * 256.0 + 0.5) * (1.0 / 256.0);
 }
 
-static void contour_start(pl_aa *aa) {
-    if (aa->ncont == aa->cont_cap) {
-        int nc = aa->cont_cap ? 2 * aa->cont_cap : 8;
-        int *s = realloc(aa->starts, (size_t)(nc + 1) * sizeof *s);
-        if (!s) {
-            aa->failed = 1;
-            return;
-        }
-        aa->starts = s;
-        aa->cont_cap = nc;
+/* Room for one more element in the growing array *arr of `used` elements (capacity *cap,
+   doubling from `first`; `spare` elements are allocated beyond the capacity). 0, with
+   aa->failed set, when out of memory. */
+static int room(pl_aa *aa, void **arr, int *cap, int used, int first, size_t elem, int spare) {
+    if (used < *cap) return 1;
+    int nc = *cap ? 2 * *cap : first;
+    void *p = realloc(*arr, (size_t)(nc + spare) * elem);
+    if (!p) {
+        aa->failed = 1;
+        return 0;
     }
-    aa->starts[aa->ncont++] = aa->npts;
+    *arr = p;
+    *cap = nc;
+    return 1;
+}
+
+static void contour_start(pl_aa *aa) {
+    /* one spare slot: the contour list is closed with the end of the last contour */
+    if (room(aa, (void **)&aa->starts, &aa->cont_cap, aa->ncont, 8, sizeof *aa->starts, 1))
+        aa->starts[aa->ncont++] = aa->npts;
 }
 
 static void point(pl_aa *aa, double x, double y) {
-    if (aa->npts == aa->pts_cap) {
-        int nc = aa->pts_cap ? 2 * aa->pts_cap : 256;
-        pl_vec2 *p = realloc(aa->pts, (size_t)nc * sizeof *p);
-        if (!p) {
-            aa->failed = 1;
-            return;
-        }
-        aa->pts = p;
-        aa->pts_cap = nc;
-    }
-    aa->pts[aa->npts++] = (pl_vec2){snap(x), snap(y)};
+    if (room(aa, (void **)&aa->pts, &aa->pts_cap, aa->npts, 256, sizeof *aa->pts, 0))
+        aa->pts[aa->npts++] = (pl_vec2){snap(x), snap(y)};
+}
+
+static void push_rect(pl_aa *aa, aa_rect r) {
+    if (room(aa, (void **)&aa->rects, &aa->rect_cap, aa->nrects, 64, sizeof *aa->rects, 0))
+        aa->rects[aa->nrects++] = r;
 }
 
 /* Adds the signed area of edge (x0,y0)-(x1,y1) to the accumulation rows (buffer width bw,
@@ -422,17 +426,7 @@ static void shape_end(pl_aa *aa) {
         }
     }
     if (aa->idata) return;
-    if (aa->nrects == aa->rect_cap) {
-        int ncap = aa->rect_cap ? 2 * aa->rect_cap : 64;
-        aa_rect *r = realloc(aa->rects, (size_t)ncap * sizeof *r);
-        if (!r) {
-            aa->failed = 1;
-            return;
-        }
-        aa->rects = r;
-        aa->rect_cap = ncap;
-    }
-    aa->rects[aa->nrects++] = (aa_rect){px0, py0, px1, py1};
+    push_rect(aa, (aa_rect){px0, py0, px1, py1});
 }
 
 void pl_aa_polygon(pl_aa *aa, const pl_vec2 *p, int n) {
@@ -843,19 +837,6 @@ int pl_aa_fill(pl_aa *aa, uint8_t *data, int stride, pl_rgba color) {
 
 /* ------------------------------------------------------------- thin segments */
 
-static void push_rect(pl_aa *aa, aa_rect r) {
-    if (aa->nrects == aa->rect_cap) {
-        int ncap = aa->rect_cap ? 2 * aa->rect_cap : 64;
-        aa_rect *nr = realloc(aa->rects, (size_t)ncap * sizeof *nr);
-        if (!nr) {
-            aa->failed = 1;
-            return;
-        }
-        aa->rects = nr;
-        aa->rect_cap = ncap;
-    }
-    aa->rects[aa->nrects++] = r;
-}
 
 /* Coverage of a pixel by a straight band, from the distribution of the pixel square projected
  * onto the band's normal: for a unit normal (nx, ny) with a = min(|nx|, |ny|), b = max, the

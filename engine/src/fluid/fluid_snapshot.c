@@ -34,6 +34,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Scalar fields of struct pl_fluid that a snapshot copies one to one (same names in the
+   snapshot): one list, so that capture and restore cannot drift apart. */
+#define PL_FL_SNAPSHOT_SCALARS(X)                                                            \
+    X(k_dirty) X(have_solution) X(static_valid) X(initialised) X(refresh_pending)            \
+    X(steps_since) X(time_since) X(time) X(out_time) X(par) X(assembled_par)                 \
+    X(geometry_written) X(pressures_started) X(stats) X(src_active) X(t_source) X(last_src_abs)
+
 struct pl_fl_snapshot {
     /* scalars */
     int nq, nl;
@@ -139,25 +146,11 @@ pl_fl_snapshot *pl__fluid_snapshot(const struct pl_fluid *f, size_t *bytes) {
     z->ref_ang = dup(f->ref_ang, sizeof(double) * (size_t)z->ref_n, &b, &fail);
     z->fcache_n = f->fcache ? f->fcache_n : 0;
     z->fcache = dup(f->fcache, sizeof(double) * 3 * (size_t)z->fcache_n, &b, &fail);
-    z->k_dirty = f->k_dirty;
-    z->have_solution = f->have_solution;
-    z->static_valid = f->static_valid;
-    z->initialised = f->initialised;
-    z->refresh_pending = f->refresh_pending;
-    z->steps_since = f->steps_since;
-    z->time_since = f->time_since;
-    z->time = f->time;
-    z->out_time = f->out_time;
-    z->par = f->par;
-    z->assembled_par = f->assembled_par;
+#define PL_FL_CAPTURE(field) z->field = f->field;
+    PL_FL_SNAPSHOT_SCALARS(PL_FL_CAPTURE)
+#undef PL_FL_CAPTURE
     memcpy(z->geometry_file, f->geometry_file, sizeof z->geometry_file);
     memcpy(z->pressures_file, f->pressures_file, sizeof z->pressures_file);
-    z->geometry_written = f->geometry_written;
-    z->pressures_started = f->pressures_started;
-    z->stats = f->stats;
-    z->src_active = f->src_active;
-    z->t_source = f->t_source;
-    z->last_src_abs = f->last_src_abs;
     if (fail) {
         pl__fluid_snapshot_free(&z);
         return NULL;
@@ -322,25 +315,11 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
         f->bc_dirty = z->bc_dirty;
         f->built = z->built;
     }
-    f->k_dirty = z->k_dirty;
-    f->have_solution = z->have_solution;
-    f->static_valid = z->static_valid;
-    f->initialised = z->initialised;
-    f->refresh_pending = z->refresh_pending;
-    f->steps_since = z->steps_since;
-    f->time_since = z->time_since;
-    f->time = z->time;
-    f->out_time = z->out_time;
-    f->par = z->par;
-    f->assembled_par = z->assembled_par;
+#define PL_FL_RESTORE(field) f->field = z->field;
+    PL_FL_SNAPSHOT_SCALARS(PL_FL_RESTORE)
+#undef PL_FL_RESTORE
     memcpy(f->geometry_file, z->geometry_file, sizeof f->geometry_file);
     memcpy(f->pressures_file, z->pressures_file, sizeof f->pressures_file);
-    f->geometry_written = z->geometry_written;
-    f->pressures_started = z->pressures_started;
-    f->stats = z->stats;
-    f->src_active = z->src_active;
-    f->t_source = z->t_source;
-    f->last_src_abs = z->last_src_abs;
     f->sys.factorised = 0; /* the live factor is of another matrix: refactorize at the next solve */
     return PL_OK;
 }
