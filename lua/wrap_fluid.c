@@ -339,8 +339,9 @@ static int f_output_file(lua_State *L)
 /* ---- saturated soil (porelab/soil.h, docs/soil.md) ---- */
 
 /* w:soil_region{lo = {x, y}, hi = {x, y}} -> {sxx, syy, sxy, u, u_excess, total_xx, total_yy,
- * count, area}: effective stress of the grains (contacts, compression positive, Pa), mean pore
- * and excess pore pressure (Pa), total stress sigma' + u, grains counted, wet area (m^2) */
+ * count, area, overburden}: effective stress of the grains (contacts, compression positive, Pa),
+ * mean pore and excess pore pressure (Pa), total stress sigma' + u, grains counted, wet area
+ * (m^2), geostatic vertical effective stress (submerged weight of the column above, Pa) */
 static int f_soil_region(lua_State *L)
 {
     static const char *const fields[] = {"lo", "hi", NULL};
@@ -351,10 +352,11 @@ static int f_soil_region(lua_State *L)
     pl_vec2 lo = vec_field(L, 2, fn, "lo"), hi = vec_field(L, 2, fn, "hi");
     pl_soil_region r;
     pl_lua_check_status(L, lw->w, pl_world_soil_region(lw->w, lo, hi, &r), fn);
-    lua_createtable(L, 0, 9);
+    lua_createtable(L, 0, 10);
     const struct { const char *k; double v; } f[] = {
         {"sxx", r.eff[0]}, {"syy", r.eff[3]}, {"sxy", r.eff[1]}, {"u", r.u}, {"u_excess", r.u_excess},
-        {"total_xx", r.total[0]}, {"total_yy", r.total[3]}, {"count", (double)r.bodies}, {"area", r.area}};
+        {"total_xx", r.total[0]}, {"total_yy", r.total[3]}, {"count", (double)r.bodies}, {"area", r.area},
+        {"overburden", r.overburden}};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; k++) {
         lua_pushnumber(L, f[k].v);
         lua_setfield(L, -2, f[k].k);

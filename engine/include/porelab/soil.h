@@ -21,6 +21,11 @@ typedef struct pl_soil_region {
     double u_excess;   ///< mean excess pore pressure (pressure minus hydrostatic), Pa
     double total[4];   ///< total stress sigma = sigma' + u I, Pa, compression positive
     int bodies;        ///< grains counted for sigma'
+    double overburden; ///< geostatic vertical effective stress, Pa: the submerged weight per unit
+                       ///< width of the dynamic bodies whose centroids lie in the column
+                       ///< lo.x..hi.x above each level, averaged over the region's height
+                       ///< (buoyancy taken off where the centroid's pore pressure is positive);
+                       ///< 0 unless gravity points along -y
     double area;       ///< area of the region inside the fluid mesh, m^2
 } pl_soil_region;
 

@@ -54,6 +54,7 @@ static const flag_row FLAGS[] = {
     /* pore pressure from skeleton volume change (docs/soil.md) */
     {{"FLUID_FORCE_REUSE", "0/1", "1: the fluid force on each body is computed at fluid updates (every FLUID_SOLVE_TIMESTEPS steps) and reused in between; 0: every grain step", 0, 1, 1}, 0},
     {{"FLUID_CONSOLIDATION", "0/1", "1: grains moving into or out of the pores change the pore pressure: (S + n rho_f g / K_f) dh/dt - div(K grad h) = -div(v_s) (docs/soil.md)", 0, 1, 1}, 0},
+    {{"FLUID_POROSITY_TIMESTEPS", "steps", "grain steps between porosity updates (solid areas, permeability, storage, and the pieces of each grain in each element); in between, every fluid solution takes its source and pushes the grains with the last pieces (docs/soil.md §2); 0 = at every fluid solution", 0, 1e12, 1}, 0},
     {{"FLUID_BULK_MODULUS", "Pa", "bulk modulus K_f of the pore fluid (storage n rho_f g / K_f with FLUID_CONSOLIDATION); 0 = incompressible", 0, 1e30, 1}, 2.2e9},
     /* MIMES output flags that porelab replaces with VTK/PNG output */
     {{"EXODUSFLAG", "0/1", "EXODUS output of MIMES: not built (porelab writes VTK .vtu/.pvd and PNG instead)", 0, 1, 0}, 0},

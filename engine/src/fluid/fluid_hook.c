@@ -13,6 +13,7 @@ pl_status pl__fluid_step(pl_world *w, double dt) {
     if (pl__fluid_flag(w, "FLUIDS_ON", 0) == 0) return PL_OK; /* FLUIDS_ON = 0: no fluid work at all */
     pl_status st;
     f->out_time = w->time + dt; /* a solve in this step gives the field at its end */
+    f->geom_since++;
     if (!f->initialised || f->mesh_dirty || f->bc_dirty || f->refresh_pending) {
         f->refresh_pending = 0;
         pl__fluid_read_params(w, &f->par);

@@ -133,6 +133,7 @@ typedef struct pl_fl_params {
     int force_reuse;        /* 1: fluid forces computed at fluid updates and reused in between */
     int consolidation;      /* 1: (S + n rho g / K_f) dh/dt - div(D grad h) = -div(v_s) */
     double bulk_modulus;    /* K_f, Pa; <= 0: incompressible fluid */
+    int porosity_every;     /* grain steps between porosity updates; 0: every fluid update */
 } pl_fl_params;
 
 /* Candidate (body, element) pair with the solid area of the body inside the element. */
@@ -186,6 +187,7 @@ struct pl_fluid {
     int refresh_pending;        /* BCs rebuilt by a query: the next step still makes the update
                                    that a change of boundary conditions asks for */
     int64_t steps_since;        /* grain steps since the last solve */
+    int64_t geom_since;         /* grain steps since the last porosity update (FLUID_POROSITY_TIMESTEPS) */
     double time_since;          /* time since the last solve, s */
     double time;                /* fluid time, s */
     double out_time;            /* time written with the pressures (end of the fluid step), s */

@@ -14,7 +14,7 @@
  *                      flags and counters mesh_dirty, bc_dirty, built, k_dirty, have_solution,
  *                      static_valid, initialised, refresh_pending (a query applied changed
  *                      lines: the next step still restarts the fluid), steps_since (the fluid
- *                      update's phase against the grain steps), time_since, time, out_time,
+ *                      update's phase against the grain steps), geom_since (the porosity update's), time_since, time, out_time,
  *                      src_active; the resolved
  *                      parameters par and assembled_par (flags changed in between take effect
  *                      at the next update); output progress geometry_written,
@@ -38,7 +38,7 @@
    snapshot): one list, so that capture and restore cannot drift apart. */
 #define PL_FL_SNAPSHOT_SCALARS(X)                                                            \
     X(k_dirty) X(have_solution) X(static_valid) X(initialised) X(refresh_pending)            \
-    X(steps_since) X(time_since) X(time) X(out_time) X(par) X(assembled_par)                 \
+    X(steps_since) X(geom_since) X(time_since) X(time) X(out_time) X(par) X(assembled_par)                 \
     X(geometry_written) X(pressures_started) X(stats) X(src_active) X(t_source) X(last_src_abs)
 
 struct pl_fl_snapshot {
@@ -47,7 +47,7 @@ struct pl_fl_snapshot {
     int mesh_dirty, bc_dirty, built;
     int nn, ne, nnz;            /* sizes of the mesh arrays below; nn = 0: no valid mesh */
     int k_dirty, have_solution, static_valid, initialised, refresh_pending;
-    int64_t steps_since;
+    int64_t steps_since, geom_since;
     double time_since, time, out_time;
     pl_fl_params par, assembled_par;
     char geometry_file[256], pressures_file[256];

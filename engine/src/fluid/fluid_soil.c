@@ -83,6 +83,28 @@ pl_status pl_world_soil_region(pl_world *w, pl_vec2 lo, pl_vec2 hi, pl_soil_regi
         out->area = A;
         if (A > 0) { out->u = U / A; out->u_excess = UE / A; }
     }
+    /* geostatic overburden: a body at elevation y (along -gravity) above lo weighs on every
+       level between lo and y, so its share of the mean over the region's height H is
+       clamp((y - lo) / H, 0, 1) of its submerged weight, over the column width W */
+    const double gm = -w->def.gravity.y;
+    if (w->def.gravity.x == 0 && gm > 0) { /* defined for gravity along -y only */
+        const double rho_f = f && f->built && f->head ? f->par.density : 0;
+        const double H = hi.y - lo.y, W = hi.x - lo.x;
+        double s = 0;
+        for (int i = 0; i < w->n; i++) {
+            if (w->motion[i] != PL_MOTION_DYNAMIC) continue;
+            const pl_vec2 c = w->pos[i];
+            if (c.x < lo.x || c.x > hi.x || c.y <= lo.y) continue;
+            double wt = w->mass[i] * gm;
+            if (rho_f > 0) {
+                double p, h;
+                if (pl_fl_pressure_at(f, c, &p, &h) >= 0 && p > 0) wt -= rho_f * gm * w->area[i];
+            }
+            const double fr = (c.y - lo.y) / H;
+            s += wt * (fr < 1 ? fr : 1);
+        }
+        out->overburden = s / W;
+    }
     for (int k = 0; k < 4; k++) out->total[k] = out->eff[k];
     out->total[0] += out->u;
     out->total[3] += out->u;

@@ -64,6 +64,7 @@ void pl__fluid_read_params(pl_world *w, pl_fl_params *p) {
     p->consolidation = pl__fluid_flag(w, "FLUID_CONSOLIDATION", 0) != 0;
     p->force_reuse = pl__fluid_flag(w, "FLUID_FORCE_REUSE", 0) != 0;
     p->bulk_modulus = pl__fluid_flag(w, "FLUID_BULK_MODULUS", 2.2e9);
+    p->porosity_every = (int)fmin(pl__fluid_flag(w, "FLUID_POROSITY_TIMESTEPS", 0), 2e9);
     p->gravity = w->def.gravity;
     double g = hypot(p->gravity.x, p->gravity.y);
     if (g > 0) {
@@ -189,10 +190,16 @@ pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
     /* gravity or density changes move the prescribed total heads */
     pl_status st = ensure_built(w);
     if (st != PL_OK) return st;
-    if (f->par.perm_mode == 1 || f->par.drag || f->par.consolidation) {
+    /* the pieces of the grains in the elements: at every update, or with
+       FLUID_POROSITY_TIMESTEPS = P every P grain steps (and whenever bodies were added, the mesh
+       was rebuilt or the solve is static); in between the last pieces stand */
+    const int lagged = f->par.porosity_every > 0 && !is_static && f->initialised && f->cover_bodies == w->n &&
+                       f->geom_since < f->par.porosity_every;
+    if ((f->par.perm_mode == 1 || f->par.drag || f->par.consolidation) && !lagged) {
         pl_fl_bodies b = pl__fluid_world_bodies(w);
         st = pl_fl_update_porosity(f, &b);
         if (st != PL_OK) return pl__error(w, st, "fluid: out of memory in the porosity update");
+        f->geom_since = 0;
     }
     if (f->par.consolidation) {
         /* pore pressure from skeleton volume change (fluid_consolidation.c) */
@@ -404,6 +411,7 @@ static struct pl_fluid *built(pl_world *w) {
            from there: start one step behind so that the later updates fall on the same steps
            whether or not a query (e.g. a frame at t = 0) came first (docs/soil.md §7) */
         f->steps_since = -1;
+        f->geom_since = -1; /* likewise the cuts of the pieces (FLUID_POROSITY_TIMESTEPS) */
         f->time_since = 0;
     }
     return f;
