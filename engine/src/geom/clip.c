@@ -190,6 +190,22 @@ static void triangle(pl_vec2 u, pl_vec2 v, double *area, pl_vec2 *mom) {
     mom->y += a * (u.y + v.y) / 3.0;
 }
 
+/* Consecutive sectors of the outline (its parts outside the circle) merged into one: seen from
+ * a centre strictly outside the convex polygon, any two directions to points of its outline are
+ * less than pi apart, so the sum of the chain's signed angles is the single atan2 between its
+ * first and last directions, and the first moments telescope (sector() adds r^3/3 times the
+ * difference of the unit directions). A slab or block touched by a grain then costs one atan2
+ * instead of one per edge. */
+typedef struct sector_chain {
+    int open;
+    pl_vec2 u0, u1; /* first and last direction of the chain */
+} sector_chain;
+
+static void chain_add(sector_chain *ch, pl_vec2 u, pl_vec2 v) {
+    if (!ch->open) { ch->u0 = u; ch->open = 1; }
+    ch->u1 = v;
+}
+
 double pl_clip_disc(pl_vec2 c, double r, const pl_vec2 *p, int np, pl_overlap *out) {
     clear(out);
     if (np < 3 || !(r > 0)) return 0;
@@ -198,12 +214,20 @@ double pl_clip_disc(pl_vec2 c, double r, const pl_vec2 *p, int np, pl_overlap *o
     const double r2 = r * r;
     int nc = 0, inside_pieces = 0, centre_inside = 1;
     pl_vec2 cross[PL_CLIP_MAX_CROSS];
+    for (int i = 0; i < np && centre_inside; i++) {
+        const pl_vec2 a = v_sub(p[i], c), d = v_sub(p[i + 1 < np ? i + 1 : 0], p[i]);
+        if (v_cross(d, (pl_vec2){-a.x, -a.y}) < 0) centre_inside = 0;
+    }
+    /* centre strictly outside: sectors merged into chains (the first chain, which may continue
+       the last one around the outline's start, is held back to be joined with it) */
+    const int merge = !centre_inside;
+    sector_chain ch = {0}, head = {0};
+    int have_head = 0;
     for (int i = 0; i < np; i++) {
         const pl_vec2 a = v_sub(p[i], c), b = v_sub(p[i + 1 < np ? i + 1 : 0], c);
         const pl_vec2 d = v_sub(b, a);
         const double qa = v_dot(d, d);
         if (qa == 0) continue;
-        if (v_cross(d, (pl_vec2){-a.x, -a.y}) < 0) centre_inside = 0;
         const double qb = v_dot(a, d), qc = v_dot(a, a) - r2;
         const double disc = qb * qb - qa * qc; /* quarter discriminant */
         double t1 = 1, t2 = 0;                 /* inside part [t1, t2] of the edge */
@@ -220,13 +244,34 @@ double pl_clip_disc(pl_vec2 c, double r, const pl_vec2 *p, int np, pl_overlap *o
         }
         if (t1 < t2) {
             const pl_vec2 e1 = v_lerp(a, b, t1), e2 = v_lerp(a, b, t2);
-            if (t1 > 0) sector(a, e1, r, &area, &mom);
+            if (!merge) {
+                if (t1 > 0) sector(a, e1, r, &area, &mom);
+            } else {
+                if (t1 > 0) chain_add(&ch, a, e1);
+                if (ch.open) { /* the chain ends where the edge enters the circle */
+                    if (!have_head && inside_pieces == 0) { head = ch; have_head = 1; }
+                    else sector(ch.u0, ch.u1, r, &area, &mom);
+                    ch.open = 0;
+                }
+            }
             triangle(e1, e2, &area, &mom);
             sum = v_add(sum, v_sub(e2, e1));
             inside_pieces++;
-            if (t2 < 1) sector(e2, b, r, &area, &mom);
+            if (t2 < 1) {
+                if (merge) chain_add(&ch, e2, b);
+                else sector(e2, b, r, &area, &mom);
+            }
+        } else if (merge) {
+            chain_add(&ch, a, b);
         } else {
             sector(a, b, r, &area, &mom);
+        }
+    }
+    if (merge && inside_pieces > 0) {
+        if (ch.open && have_head) sector(ch.u0, head.u1, r, &area, &mom); /* around the start */
+        else {
+            if (ch.open) sector(ch.u0, ch.u1, r, &area, &mom);
+            if (have_head) sector(head.u0, head.u1, r, &area, &mom);
         }
     }
     if (inside_pieces == 0) {
