@@ -387,11 +387,80 @@ static int random_polygons(void) {
     return 0;
 }
 
+/* Disc-polygon overlaps (pl_clip_disc) against an independent quadrature: the overlap of two
+   convex sets is convex, so each horizontal line meets it in one interval (the polygon's and the
+   circle's intersected); area and first moments by the midpoint rule over 40,000 strips (error
+   ~1e-8 of the disc area near the tangent points). Random polygons (3-8 vertices on ellipses)
+   and discs, most with the centre outside the polygon, where consecutive outside sectors are
+   merged into one (clip.c). */
+static int strip_interval(const pl_vec2 *p, int np, double y, double *x0, double *x1) {
+    double lo = 1e300, hi = -1e300;
+    for (int k = 0; k < np; k++) {
+        pl_vec2 a = p[k], b = p[(k + 1) % np];
+        if ((a.y - y) * (b.y - y) > 0 || a.y == b.y) continue;
+        double x = a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x);
+        if (x < lo) lo = x;
+        if (x > hi) hi = x;
+    }
+    *x0 = lo;
+    *x1 = hi;
+    return hi >= lo;
+}
+
+static int disc_polygon_quadrature(void) {
+    pl_rng rng;
+    pl_rng_seed(&rng, 12345);
+    int tested = 0, outside = 0;
+    double worst_a = 0, worst_c = 0;
+    for (int it = 0; it < 400; it++) {
+        pl_vec2 p[8];
+        const int np = 3 + (int)(pl_rng_range(&rng, 0, 1) * 6);
+        const double rx = 0.3 + pl_rng_range(&rng, 0, 1), ry = 0.3 + pl_rng_range(&rng, 0, 1), ph = 6.28 * pl_rng_range(&rng, 0, 1);
+        for (int k = 0; k < np; k++) p[k] = (pl_vec2){rx * cos(ph + 2 * PI * k / np), ry * sin(ph + 2 * PI * k / np)};
+        const pl_vec2 c = {3 * pl_rng_range(&rng, 0, 1) - 1.5, 3 * pl_rng_range(&rng, 0, 1) - 1.5};
+        const double r = 0.1 + 0.8 * pl_rng_range(&rng, 0, 1);
+        pl_overlap o;
+        const double a = pl_clip_disc(c, r, p, np, &o);
+        const int ns = 40000;
+        double A = 0, Mx = 0, My = 0;
+        for (int j = 0; j < ns; j++) {
+            const double y = c.y - r + (j + 0.5) * 2 * r / ns, h = 2 * r / ns;
+            double x0, x1;
+            if (!strip_interval(p, np, y, &x0, &x1)) continue;
+            const double w = sqrt(fmax(r * r - (y - c.y) * (y - c.y), 0));
+            x0 = fmax(x0, c.x - w);
+            x1 = fmin(x1, c.x + w);
+            if (x1 <= x0) continue;
+            A += (x1 - x0) * h;
+            Mx += (x1 - x0) * h * 0.5 * (x0 + x1);
+            My += (x1 - x0) * h * y;
+        }
+        if (A < 1e-3 * PI * r * r) continue; /* slivers: the quadrature, not the kernel, is poor */
+        tested++;
+        int in = 1;
+        for (int k = 0; k < np; k++) {
+            pl_vec2 e = {p[(k + 1) % np].x - p[k].x, p[(k + 1) % np].y - p[k].y};
+            if (e.x * (c.y - p[k].y) - e.y * (c.x - p[k].x) < 0) in = 0;
+        }
+        outside += !in;
+        const double ea = fabs(a - A) / (PI * r * r), ec = hypot(o.centroid.x - Mx / A, o.centroid.y - My / A) / r;
+        if (ea > worst_a) worst_a = ea;
+        if (ec > worst_c) worst_c = ec;
+        ENSURE(ea < 1e-6);
+        ENSURE(ec < 1e-5);
+    }
+    fprintf(stderr, "  %d overlaps (%d with the centre outside): worst area error %.2e of pi r^2, centroid %.2e r\n",
+            tested, outside, worst_a, worst_c);
+    ENSURE(tested > 100 && outside > 50);
+    return 0;
+}
+
 int main(void) {
     RUN(two_squares_offset);
     RUN(square_and_turned_square);
     RUN(random_pairs_consistent);
     RUN(disc_square);
+    RUN(disc_polygon_quadrature);
     RUN(triangle_and_wall);
     RUN(rectangle_mass);
     RUN(ngon_tends_to_circle);
