@@ -5,11 +5,12 @@
 
 #include <math.h>
 
-/* body:shake{amplitude = {ax, ay}, frequency = f, start = t0, stop = t1}
-   x(t) = x0 + A sin(2 pi f (t - t0)) for t0 <= t <= t1; m, Hz, s. */
+/* body:shake{amplitude = {ax, ay}, frequency = f, start = t0, stop = t1, ramp = r}
+   x(t) = x0 + e(t) A sin(2 pi f (t - t0)) for t0 <= t <= t1; m, Hz, s; e tapers the amplitude
+   in and out over r seconds (raised cosine; 0 = none, at most half of t1 - t0). */
 static int b_shake(lua_State *L)
 {
-    static const char *const fields[] = {"amplitude", "frequency", "start", "stop", NULL};
+    static const char *const fields[] = {"amplitude", "frequency", "start", "stop", "ramp", NULL};
     const char *fn = "shake";
     pl_world *w;
     const int i = pl_lua_check_body(L, 1, &w);
@@ -23,7 +24,11 @@ static int b_shake(lua_State *L)
     const double t0 = pl_lua_field_number(L, 2, fn, "start", pl_world_time(w));
     const double t1 = pl_lua_field_number(L, 2, fn, "stop", INFINITY);
     PL_LUA_CHECK(L, t1 >= t0, fn, "stop", ">= start", t1);
+    const double ramp = pl_lua_field_number(L, 2, fn, "ramp", 0);
+    PL_LUA_CHECK(L, ramp >= 0 && isfinite(ramp) && (isinf(t1) || ramp <= 0.5 * (t1 - t0)), fn, "ramp",
+                 "0 .. half of stop - start (s)", ramp);
     pl_lua_check_status(L, w, pl_world_set_sinusoid(w, i, a, f, t0, t1), fn);
+    pl_lua_check_status(L, w, pl_world_set_sinusoid_ramp(w, i, ramp), fn);
     return 0;
 }
 

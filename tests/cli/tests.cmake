@@ -166,6 +166,8 @@ pl_cli_test(run_vtk RC 0
 # Boundary motions and diagnostics from Lua: bad ranges name the argument.
 pl_cli_test(bad_shake_frequency RC 1 ARGS run ${PL_BAD}/bad_shake.lua --quiet
   MATCH "bad_shake.lua:5: shake: frequency must be > 0 Hz \\(got -2\\)")
+pl_cli_test(bad_shake_ramp RC 1 ARGS run ${PL_BAD}/bad_shake_ramp.lua --quiet
+  MATCH "bad_shake_ramp.lua:5: shake: ramp must be 0 .. half of stop - start \\(s\\) \\(got 0.8\\)")
 
 # Packing helpers: fill to a porosity and a count, size distributions, servo compression.
 pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --out ${PL_CLI_OUT}/packing)

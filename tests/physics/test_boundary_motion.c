@@ -33,6 +33,39 @@ static int sinusoid_follows_law(void) {
     return 0;
 }
 
+/* A ramped shaking (pl_world_set_sinusoid_ramp): the position follows e(t) A sin(2 pi f tau) with
+   the raised-cosine envelope e over the first and last `ramp` seconds, and the table starts and
+   stops without a jump of velocity (the first and last steps move it by O(dt^3), not A w dt). */
+static int sinusoid_ramp(void) {
+    pl_world_def d = pl_default_world_def();
+    d.dt = 1e-4;
+    d.gravity = (pl_vec2){0, 0};
+    pl_world *w = pl_world_create(&d);
+    const int m = add_material(w, "m", 2500, 1e6, -1, 0.5, 0, -1);
+    const int table = add_wall(w, m, -1, 0, 1, 0);
+    ENSURE(pl_world_set_sinusoid(w, table, (pl_vec2){0.002, 0}, 5, 0.1, 0.9) == PL_OK);
+    ENSURE(pl_world_set_sinusoid_ramp(w, table, 0.5) != PL_OK); /* more than half of 0.8 s */
+    ENSURE(pl_world_set_sinusoid_ramp(w, table, 0.2) == PL_OK);
+    double first = -1, last = 0, x_prev = 0;
+    for (int k = 1; k <= 10000; k++) {
+        ENSURE(pl_world_step(w, 1) == PL_OK);
+        const double t = pl_world_time(w), x = body(w, table).position.x;
+        const double tc = fmin(fmax(t, 0.1), 0.9), tau = tc - 0.1, left = 0.9 - tc;
+        const double e = tau < 0.2 ? 0.5 * (1 - cos(M_PI * tau / 0.2)) : (left < 0.2 ? 0.5 * (1 - cos(M_PI * left / 0.2)) : 1);
+        ENSURE_NEAR(x, 0.002 * e * sin(2 * M_PI * 5 * tau), 1e-12);
+        if (t > 0.1 && first < 0) first = fabs(x - x_prev);
+        if (t <= 0.9 + 1e-9) last = fabs(x - x_prev);
+        x_prev = x;
+    }
+    const double full = 0.002 * 2 * M_PI * 5 * 1e-4; /* a step's move at full speed */
+    fprintf(stderr, "  first step after the start moves %.2e m, last before the stop %.2e m (full speed %.2e m)\n",
+            first, last, full);
+    ENSURE(first < 1e-3 * full);
+    ENSURE(last < 1e-3 * full);
+    pl_world_destroy(&w);
+    return 0;
+}
+
 static int servo_holds_force(void) {
     pl_world_def d = pl_default_world_def();
     d.gravity = (pl_vec2){0, 0};
@@ -115,6 +148,7 @@ static int settled_stepping_allocates_nothing(void) {
 
 int main(void) {
     RUN(sinusoid_follows_law);
+    RUN(sinusoid_ramp);
     RUN(servo_holds_force);
     RUN(hinged_walls_follow_top);
     RUN(settled_stepping_allocates_nothing);

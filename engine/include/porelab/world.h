@@ -163,6 +163,12 @@ pl_status pl_world_set_body_load(pl_world *w, int body, pl_vec2 force, double mo
 /// outside; x0 is its position when called. amplitude in m, frequency in Hz (> 0).
 pl_status pl_world_set_sinusoid(pl_world *w, int body, pl_vec2 amplitude, double frequency, double t_start,
                                 double t_stop);
+/// Tapers the body's sinusoid (pl_world_set_sinusoid) in and out: the amplitude grows as
+/// (1 - cos(pi tau / ramp)) / 2 over the first `ramp` seconds after t_start and shrinks the same
+/// way over the last `ramp` seconds before t_stop, so that the table starts and stops without a
+/// jump of velocity (a shaking table's ramp). ramp in s, 0 (none, the default) up to half of
+/// t_stop - t_start.
+pl_status pl_world_set_sinusoid_ramp(pl_world *w, int body, double ramp);
 /// Servo-controlled body (seed 003 eqs. 5.11-5.12): moves along the unit direction it pushes in
 /// with velocity v = gain (F_target - F_contact) / F_target, limited to |v| <= vmax, so that the
 /// contact force it receives holds F_target (N, > 0). gain and vmax in m/s.

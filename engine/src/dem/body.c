@@ -332,6 +332,18 @@ pl_status pl_world_set_sinusoid(pl_world *w, int i, pl_vec2 amp, double freq, do
     return PL_OK;
 }
 
+pl_status pl_world_set_sinusoid_ramp(pl_world *w, int i, double ramp) {
+    CHECK_BODY(w, i, "set_sinusoid_ramp");
+    if (w->motion[i] != PL_MOTION_PRESCRIBED || w->law[i].law != PL_LAW_SINUSOID)
+        return pl__error(w, PL_ERR_STATE, "sinusoid ramp: body %d has no sinusoidal motion (set_sinusoid first)", i);
+    const double span = w->law[i].t_stop - w->law[i].t_start;
+    if (!(ramp >= 0) || !isfinite(ramp) || (isfinite(span) && ramp > 0.5 * span))
+        return pl__error(w, PL_ERR_ARG, "sinusoid ramp: must be 0 .. half the shaking time (%g s) (got %g s)",
+                         0.5 * span, ramp);
+    w->law[i].ramp = ramp;
+    return PL_OK;
+}
+
 pl_status pl_world_set_servo(pl_world *w, int i, pl_vec2 dir, double target, double gain, double vmax) {
     CHECK_BODY(w, i, "set_servo");
     const double l = hypot(dir.x, dir.y);

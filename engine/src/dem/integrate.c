@@ -16,6 +16,19 @@
 
 static double sgn(double x) { return (x > 0) - (x < 0); }
 
+/* Position factor of a sinusoid at time t (clamped to its interval): e(t) sin(2 pi f tau),
+   tau = t - t_start, with the raised-cosine envelope e of its ramp (1 without a ramp). */
+static double sinusoid_at(const pl_motion *m, double t) {
+    const double tau = t - m->t_start;
+    double e = 1;
+    if (m->ramp > 0) {
+        const double left = m->t_stop - t; /* infinite for a shaking without end */
+        if (tau < m->ramp) e = 0.5 * (1 - cos(M_PI * tau / m->ramp));
+        else if (left < m->ramp) e = 0.5 * (1 - cos(M_PI * left / m->ramp));
+    }
+    return e * sin(2 * M_PI * m->frequency * tau);
+}
+
 void pl__apply_motion_laws(pl_world *w, double t, double dt) {
     for (int i = 0; i < w->n; i++) {
         if (w->motion[i] != PL_MOTION_PRESCRIBED) continue;
@@ -28,8 +41,7 @@ void pl__apply_motion_laws(pl_world *w, double t, double dt) {
         case PL_LAW_SINUSOID: {
             /* velocity that lands exactly on the law's position at t + dt */
             const double ta = fmin(fmax(t, m->t_start), m->t_stop), tb = fmin(fmax(t + dt, m->t_start), m->t_stop);
-            const double w2 = 2 * M_PI * m->frequency;
-            const double s = sin(w2 * (tb - m->t_start)) - sin(w2 * (ta - m->t_start));
+            const double s = sinusoid_at(m, tb) - sinusoid_at(m, ta);
             w->vel[i] = (pl_vec2){m->amplitude.x * s / dt, m->amplitude.y * s / dt};
             w->omega[i] = 0;
             break;

@@ -56,7 +56,7 @@ typedef struct pl_pair {
 /* Boundary motion laws of prescribed bodies. */
 typedef enum pl_motion_law {
     PL_LAW_CONSTANT = 0,  /* constant velocity (MIMES set_velocity) */
-    PL_LAW_SINUSOID = 1,  /* x(t) = x0 + A sin(2 pi f (t - t0)) between t0 and t1 */
+    PL_LAW_SINUSOID = 1,  /* x(t) = x0 + e(t) A sin(2 pi f (t - t0)) between t0 and t1, e the ramp envelope */
     PL_LAW_SERVO = 2,     /* servo wall holding a force (seed 003 eqs. 5.11-5.12) */
     PL_LAW_HINGE = 3      /* side wall of a simple-shear box turning about a pivot */
 } pl_motion_law;
@@ -66,6 +66,7 @@ typedef struct pl_motion {
     pl_vec2 velocity; double omega;      /* constant law */
     pl_vec2 amplitude; double frequency; /* sinusoid: displacement amplitude (m), Hz */
     double t_start, t_stop;
+    double ramp;                         /* sinusoid: raised-cosine taper in and out, s (0: none) */
     pl_vec2 servo_dir; double servo_target; double servo_gain; double servo_vmax;
     pl_vec2 servo_drive; int servo_fluid;   /* servo extras (servo_drive.c): drive velocity, fluid force counted */
     pl_vec2 pivot, rel0; double angle0; int follow; double follow_x0, height; /* hinge */
