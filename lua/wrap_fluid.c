@@ -252,6 +252,16 @@ static int f_body_force(lua_State *L)
     return 3;
 }
 
+/* w:fluid_frame(body) / w:fluid_frame(nil): the pore water shares that prescribed body's
+   acceleration (a shaking table), Darcy's law in its frame; nil: a fixed frame */
+static int f_frame(lua_State *L)
+{
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    const int b = lua_isnoneornil(L, 2) ? -1 : body_arg(L, 2);
+    pl_lua_check_status(L, lw->w, pl_world_fluid_set_frame(lw->w, b), "fluid_frame");
+    return 0;
+}
+
 static int f_stats(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
@@ -404,6 +414,7 @@ const luaL_Reg pl_lua_fluid_methods[] = {{"fluid_quad", f_quad},
                                          {"fluid_pressure_at", f_pressure_at},
                                          {"fluid_line_inflow", f_line_inflow},
                                          {"fluid_body_force", f_body_force},
+                                         {"fluid_frame", f_frame},
                                          {"fluid_stats", f_stats},
                                          {"fluid_write_vtu", f_write_vtu},
                                          {"fluid_write_geometry", f_write_geometry},

@@ -58,6 +58,14 @@ pl_status pl_world_fluid_solve_static(pl_world *w);
 pl_status pl_world_fluid_advance(pl_world *w, double dt);
 /// Sets the pressure head (m) of every free node to pressure_head (initial condition).
 pl_status pl_world_fluid_set_pressure_head(pl_world *w, double pressure_head);
+
+/// The pore water shares the acceleration a of a prescribed body (a shaking table carrying the
+/// tanks; shake or constant velocity): Darcy's law is written in that body's frame,
+/// q = -D (grad h + a/g) (the u-p approximation: the water's acceleration is the frame's), so
+/// that no-flow walls get the pressure gradient -rho_f a that accelerates the water, grains
+/// feel it as buoyancy and the drag follows q. body -1: none (the default, a fixed frame).
+/// The mesh itself does not move.
+pl_status pl_world_fluid_set_frame(pl_world *w, int body);
 /// Per-element user conductivities (m/s) used when FLUID_PERM = 2 (count = triangle count).
 pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, int count);
 

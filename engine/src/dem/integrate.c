@@ -29,6 +29,28 @@ static double sinusoid_at(const pl_motion *m, double t) {
     return e * sin(2 * M_PI * m->frequency * tau);
 }
 
+int pl__law_acceleration(const pl_motion *m, double t, pl_vec2 *acc) {
+    *acc = (pl_vec2){0, 0};
+    if (m->law == PL_LAW_CONSTANT) return 1;
+    if (m->law != PL_LAW_SINUSOID) return 0;
+    if (t < m->t_start || t > m->t_stop) return 1;
+    /* x = A e(tau) sin(w tau): x'' = A (e'' sin + 2 e' w cos - e w^2 sin) */
+    const double tau = t - m->t_start, om = 2 * M_PI * m->frequency;
+    double e = 1, de = 0, dde = 0;
+    if (m->ramp > 0) {
+        const double left = m->t_stop - t, k = M_PI / m->ramp;
+        if (tau < m->ramp) {
+            e = 0.5 * (1 - cos(k * tau)); de = 0.5 * k * sin(k * tau); dde = 0.5 * k * k * cos(k * tau);
+        } else if (left < m->ramp) {
+            e = 0.5 * (1 - cos(k * left)); de = -0.5 * k * sin(k * left); dde = 0.5 * k * k * cos(k * left);
+        }
+    }
+    const double s = sin(om * tau), c = cos(om * tau);
+    const double f = dde * s + 2 * de * om * c - e * om * om * s;
+    *acc = (pl_vec2){m->amplitude.x * f, m->amplitude.y * f};
+    return 1;
+}
+
 void pl__apply_motion_laws(pl_world *w, double t, double dt) {
     for (int i = 0; i < w->n; i++) {
         if (w->motion[i] != PL_MOTION_PRESCRIBED) continue;

@@ -72,6 +72,10 @@ typedef struct pl_motion {
     pl_vec2 pivot, rel0; double angle0; int follow; double follow_x0, height; /* hinge */
 } pl_motion;
 
+/* Acceleration (m/s^2) of a prescribed body's law at time t: the sinusoid's (with its ramp)
+   in closed form, 0 for a constant velocity; returns 0 for laws without one (servo, hinge). */
+int pl__law_acceleration(const pl_motion *m, double t, pl_vec2 *acc);
+
 struct pl_fluid; /* fluid module (engine/src/fluid) */
 
 /* Per-body sums of the dashpot part (d*) and the tangential-spring part (s*) of the contact

@@ -213,6 +213,10 @@ struct pl_fluid {
     double t_source;            /* time spent computing the source, s */
     double last_src_abs;        /* sum |src| of the last update, m^2/s */
     double *fcache;             /* 3 per body: fluid force x, y and moment of the last update */
+    /* accelerating frame (pl_world_fluid_set_frame): the pore water shares the acceleration of a
+       prescribed body, Darcy's law q = -D (grad h + a/g) (u-p approximation) */
+    int frame_body_plus1;       /* that body's index + 1; 0: none */
+    pl_vec2 frame_acc;          /* its acceleration at the last update, m/s^2 */
     int fcache_n, fcache_cap;   /* bodies with a cached force */
 };
 
@@ -226,6 +230,9 @@ void pl_fl_apply_dirichlet(struct pl_fluid *f, double *h);
 double pl_fl_explicit_dt_limit(const struct pl_fluid *f);
 /* Net inflow (m^2/s per unit thickness) through the nodes a head line prescribes. */
 double pl_fl_line_inflow(const struct pl_fluid *f, int line);
+
+/* Adds the frame load -int grad N_i . D a/g dA of an accelerating frame to r (nn). */
+void pl_fl_add_frame_load(const struct pl_fluid *f, double *r);
 
 /* porosity and permeability (fluid_porosity.c) */
 pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b);

@@ -39,7 +39,8 @@
 #define PL_FL_SNAPSHOT_SCALARS(X)                                                            \
     X(k_dirty) X(have_solution) X(static_valid) X(initialised) X(refresh_pending)            \
     X(steps_since) X(geom_since) X(time_since) X(time) X(out_time) X(par) X(assembled_par)                 \
-    X(geometry_written) X(pressures_started) X(stats) X(src_active) X(t_source) X(last_src_abs)
+    X(geometry_written) X(pressures_started) X(stats) X(src_active) X(t_source) X(last_src_abs)      \
+    X(frame_body_plus1) X(frame_acc)
 
 struct pl_fl_snapshot {
     /* scalars */
@@ -55,6 +56,8 @@ struct pl_fl_snapshot {
     pl_fluid_stats stats;
     int src_active;
     double t_source, last_src_abs;
+    int frame_body_plus1;
+    pl_vec2 frame_acc;
     int ncover, cover_bodies, has_cover_start;
     int ref_n, fcache_n;
     int has_perm_user, has_cons;

@@ -60,6 +60,7 @@ static pl_status theta_solve(struct pl_fluid *f, double c, double theta) {
     memcpy(r, s->fload, sizeof(double) * (size_t)nn);
     if (f->src_active && f->src) /* volume source of the skeleton (fluid_consolidation.c) */
         for (int j = 0; j < nn; j++) r[j] += f->src[j];
+    pl_fl_add_frame_load(f, r); /* accelerating frame (pl_world_fluid_set_frame) */
     if (c != 0 || theta != 1) {
         for (int j = 0; j < nn; j++) {
             double hj = h[j];
@@ -143,6 +144,7 @@ static pl_status explicit_advance(struct pl_fluid *f, double dt) {
         memcpy(r, s->fload, sizeof(double) * (size_t)nn);
         if (f->src_active && f->src)
             for (int j = 0; j < nn; j++) r[j] += f->src[j];
+        pl_fl_add_frame_load(f, r);
         for (int j = 0; j < nn; j++) {
             double hj = h[j];
             for (int p = s->colp[j]; p < s->colp[j + 1]; p++) r[s->rowi[p]] -= s->kval[p] * hj;

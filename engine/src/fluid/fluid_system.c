@@ -251,3 +251,21 @@ void pl_fl_assemble(struct pl_fluid *f) {
     f->static_valid = 0;
     f->assembled_par = f->par;
 }
+
+/* Darcy's law in a frame accelerating with a (the pore water moves with the shaking table):
+   q = -D (grad h + a/g). Its divergence term, -div(D a/g), gives the load
+   -int grad N_i . D a/g dA = -(D_x b_i a_x + D_y c_i a_y) / (2 g) per element (A grad N_i =
+   (b_i, c_i)/2), with the conductivities of the assembled matrix (anisotropy included). Inside a
+   uniform region the loads cancel; at no-flow walls they make the pressure gradient -rho_f a
+   that accelerates the water, at head lines the flow that a fixed free surface lets through. */
+void pl_fl_add_frame_load(const struct pl_fluid *f, double *r) {
+    const pl_fl_mesh *m = &f->mesh;
+    const double ax = f->frame_acc.x / f->par.g, ay = f->frame_acc.y / f->par.g;
+    if (ax == 0 && ay == 0) return;
+    for (int e = 0; e < m->ne; e++) {
+        const double *bc = &m->bc[6 * e];
+        const double dx = f->perm_assembled[e], dy = dx * f->quads[m->tri_quad[e]].anisotropy;
+        const int32_t *v = &m->tri[3 * e];
+        for (int a = 0; a < 3; a++) r[v[a]] -= 0.5 * (dx * bc[a] * ax + dy * bc[3 + a] * ay);
+    }
+}

@@ -214,6 +214,12 @@ pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
         f->src_active = 0;
         f->static_valid = 0;
     }
+    /* accelerating frame: the acceleration of its body at the time the solution stands for */
+    const pl_vec2 acc0 = f->frame_acc;
+    f->frame_acc = (pl_vec2){0, 0};
+    if (f->frame_body_plus1 > 0 && f->frame_body_plus1 <= w->n)
+        pl__law_acceleration(&w->law[f->frame_body_plus1 - 1], is_static ? w->time : f->out_time, &f->frame_acc);
+    if (f->frame_acc.x != acc0.x || f->frame_acc.y != acc0.y) f->static_valid = 0;
     if (f->par.perm_mode == 2 && !f->perm_user)
         return pl__error(w, PL_ERR_STATE,
                          "fluid: FLUID_PERM = 2 needs per-element permeabilities (fluid_set_element_permeability)");
@@ -354,6 +360,23 @@ pl_status pl_world_fluid_advance(pl_world *w, double dt) {
     pl_status st = pl__fluid_update(w, dt, 0);
     if (st == PL_OK) w->fluid->initialised = 1;
     return st;
+}
+
+pl_status pl_world_fluid_set_frame(pl_world *w, int body) {
+    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_frame: no fluid model (add a fluid quad first)");
+    if (body < 0) {
+        w->fluid->frame_body_plus1 = 0;
+        return PL_OK;
+    }
+    if (body >= w->n) return pl__error(w, PL_ERR_ARG, "fluid_frame: no body %d (the world has %d)", body, w->n);
+    pl_vec2 a;
+    if (w->motion[body] != PL_MOTION_PRESCRIBED || !pl__law_acceleration(&w->law[body], w->time, &a))
+        return pl__error(w, PL_ERR_ARG,
+                         "fluid_frame: body %d must move by a prescribed law with a known acceleration (shake, or a "
+                         "constant velocity); give it its motion first",
+                         body);
+    w->fluid->frame_body_plus1 = body + 1;
+    return PL_OK;
 }
 
 pl_status pl_world_fluid_set_pressure_head(pl_world *w, double psi) {
