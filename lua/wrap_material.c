@@ -69,7 +69,7 @@ int pl_lua_material_index(lua_State *L, int world_idx, int value_idx, const char
 /* ------------------------------------------------------------ constructors */
 
 static const char *const material_fields[] = {
-    "name", "density", "kn", "ks", "young", "young_overlap", "friction", "cohesion",
+    "name", "density", "kn", "ks", "young", "young_overlap", "friction", "rolling", "cohesion",
     "cn", "cs", "restitution", NULL};
 
 static int w_material(lua_State *L)
@@ -104,6 +104,8 @@ static int w_material(lua_State *L)
     }
     d.friction = pl_lua_field_number(L, 2, fn, "friction", d.friction);
     PL_LUA_CHECK(L, d.friction >= 0, fn, "friction", ">= 0", d.friction);
+    d.rolling = pl_lua_field_number(L, 2, fn, "rolling", d.rolling);
+    PL_LUA_CHECK(L, d.rolling >= 0 && isfinite(d.rolling), fn, "rolling", ">= 0", d.rolling);
     d.cohesion = pl_lua_field_number(L, 2, fn, "cohesion", d.cohesion);
     PL_LUA_CHECK(L, d.cohesion >= 0, fn, "cohesion", ">= 0 N", d.cohesion);
     d.cn = pl_lua_field_number(L, 2, fn, "cn", d.cn);
@@ -126,7 +128,7 @@ static int w_material(lua_State *L)
 }
 
 static const char *const pair_fields[] = {"kn",  "ks", "friction", "cohesion",
-                                          "cn",  "cs", "restitution", NULL};
+                                          "cn",  "cs", "restitution", "rolling", NULL};
 
 static int w_pair(lua_State *L)
 {
@@ -137,7 +139,7 @@ static int w_pair(lua_State *L)
     pl_lua_check_def(L, 4, fn);
     pl_lua_check_fields(L, 4, fn, pair_fields);
     pl_pair_def d = pl_default_pair_def();
-    double *v[] = {&d.kn, &d.ks, &d.friction, &d.cohesion, &d.cn, &d.cs, &d.restitution};
+    double *v[] = {&d.kn, &d.ks, &d.friction, &d.cohesion, &d.cn, &d.cs, &d.restitution, &d.rolling};
     for (int i = 0; pair_fields[i]; i++) {
         if (!pl_lua_has_field(L, 4, pair_fields[i])) continue;
         *v[i] = pl_lua_field_number(L, 4, fn, pair_fields[i], -1);
@@ -201,8 +203,9 @@ static int m_params(lua_State *L)
         double v;
     } f[] = {{"density", d.density}, {"kn", d.kn},           {"ks", d.ks},
              {"young", d.young},     {"friction", d.friction}, {"cohesion", d.cohesion},
-             {"cn", d.cn},           {"cs", d.cs},           {"restitution", d.restitution}};
-    lua_createtable(L, 0, 10);
+             {"cn", d.cn},           {"cs", d.cs},           {"restitution", d.restitution},
+             {"rolling", d.rolling}};
+    lua_createtable(L, 0, 11);
     lua_pushstring(L, d.name);
     lua_setfield(L, -2, "name");
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {

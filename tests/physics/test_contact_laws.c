@@ -8,6 +8,11 @@
  * Incline: a disc on a slope of angle theta with friction mu rolls without slipping when
  *   tan theta < 3 mu, with a = (2/3) g sin theta; otherwise it slides with
  *   a = g (sin theta - mu cos theta) (rigid-body mechanics), within 1 %.
+ * Rolling resistance (material rolling = mu_r; Iwashita & Oda 1998): on a slope with enough
+ *   friction a disc stays at rest while tan theta <= mu_r (the limit moment mu_r r N balances
+ *   the friction's moment m g sin theta r); beyond, it rolls with the plastic moment, so that
+ *   a = (2/3) g (sin theta - mu_r cos theta) (rigid-body mechanics, I = m r^2 / 2), within 1 %.
+ *   A heap of discs settling with rolling resistance keeps the energy balance within 1 %.
  * Guard: a stack run at three times the critical step stops with a message naming the body,
  *   the time and a safe time step. */
 #include "common.h"
@@ -118,12 +123,23 @@ static int energy_error_second_order(void) {
     return 0;
 }
 
+static double g_rolling = 0; /* mu_r of the incline's material */
+
 static double incline_acceleration(double theta, double mu, double *rolling_ratio) {
     pl_world_def d = pl_default_world_def();
     d.gravity = (pl_vec2){0, -9.81};
     pl_world *w = pl_world_create(&d);
     const double r = 0.01, k = 1e6, rho = 2500, m = rho * M_PI * r * r;
-    const int mat = add_material(w, "grain", rho, k, 0.8 * k, mu, 2 * 0.7 * sqrt(m * k), -1);
+    pl_material_def md = pl_default_material_def();
+    md.name = "grain";
+    md.density = rho;
+    md.kn = k;
+    md.ks = 0.8 * k;
+    md.friction = mu;
+    md.cn = 2 * 0.7 * sqrt(m * k);
+    md.cs = -1;
+    md.rolling = g_rolling;
+    const int mat = pl_world_add_material(w, &md);
     const double L = 2.0, c = cos(theta), s = sin(theta);
     /* slope going down to the right: from (0, 0) to (L c, -L s) */
     add_wall(w, mat, -0.1 * c, 0.1 * s, L * c, -L * s);
@@ -163,6 +179,49 @@ static int incline_rolls_or_slips(void) {
     return 0;
 }
 
+static int rolling_resistance(void) {
+    const double g = 9.81, mur = 0.2;
+    double ratio;
+    g_rolling = mur;
+    /* holds: tan theta = 0.8 mu_r (friction 1, no slip) */
+    double th = atan(0.8 * mur);
+    double a = incline_acceleration(th, 1.0, &ratio);
+    fprintf(stderr, "  mu_r = %.2f, tan theta = 0.8 mu_r: a = %.3e m/s^2 (rests)\n", mur, a);
+    ENSURE(fabs(a) < 1e-3);
+    /* rolls against the plastic rolling moment: tan theta = 1.5 mu_r */
+    th = atan(1.5 * mur);
+    a = incline_acceleration(th, 1.0, &ratio);
+    const double ref = 2.0 / 3 * g * (sin(th) - mur * cos(th));
+    fprintf(stderr, "  mu_r = %.2f, tan theta = 1.5 mu_r: a = %.5f, analytic (2/3) g (sin - mu_r cos) = %.5f; "
+                    "v / (omega r) = %.4f\n", mur, a, ref, ratio);
+    ENSURE_REL(a, ref, 0.01);
+    ENSURE_NEAR(ratio, 1, 0.01);
+    g_rolling = 0;
+    /* a heap settling with rolling resistance: the energy balance holds (the rolling springs'
+       energy is elastic, what their limit dissipates is counted with friction) */
+    pl_world_def d = pl_default_world_def();
+    pl_world *w = pl_world_create(&d);
+    pl_material_def md = pl_default_material_def();
+    md.name = "grain";
+    md.kn = 1e6;
+    md.friction = 0.5;
+    md.restitution = 0.3;
+    md.rolling = 0.3;
+    const int mat = pl_world_add_material(w, &md);
+    add_wall(w, mat, -0.2, 0, 0.2, 0);
+    for (int j = 0; j < 8; j++)
+        for (int i = 0; i < 12 - j; i++) add_disc(w, mat, -0.11 + 0.0201 * i + 0.01 * j, 0.0105 + 0.021 * j, 0.01);
+    ENSURE(pl_world_step(w, 20000) == PL_OK);
+    const pl_energy e = pl_world_energy(w);
+    const double exch = e.damped + e.friction + fabs(e.external) + fabs(e.gravitational);
+    fprintf(stderr, "  heap with mu_r = 0.3: dissipated %.4g J by damping, %.4g J by friction and rolling; balance %.3g J "
+                    "(%.3f%% of %.4g J exchanged)\n", e.damped, e.friction, e.balance, 100 * fabs(e.balance) / exch, exch);
+    ENSURE(e.friction > 0);
+    ENSURE(fabs(e.balance) < 0.01 * exch);
+    pl_world_destroy(&w);
+    return 0;
+}
+
 static int guard_stops_three_times_critical(void) {
     pl_world_def d = pl_default_world_def();
     pl_world *w = pl_world_create(&d);
@@ -196,6 +255,7 @@ int main(void) {
     RUN(restitution_from_material);
     RUN(energy_error_second_order);
     RUN(incline_rolls_or_slips);
+    RUN(rolling_resistance);
     RUN(guard_stops_three_times_critical);
     return pl_test_report();
 }

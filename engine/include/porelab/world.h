@@ -63,6 +63,11 @@ typedef struct pl_material_def {
     double cn;             ///< normal contact dashpot, N s/m; used when restitution < 0. Default 0.
     double cs;             ///< shear contact dashpot, N s/m; < 0 = cn x ks / kn (seed 003). Default -1.
     double restitution;    ///< coefficient of restitution 0 < e <= 1; overrides cn when >= 0. Default -1 (off).
+    double rolling;        ///< rolling resistance mu_r (discs with discs and walls): the contact resists the
+                           ///< relative rotation with an elastic-plastic moment, spring k_S R^2, limit
+                           ///< mu_r R F_n (R = r_a r_b / (r_a + r_b), or the disc's radius on a wall;
+                           ///< Iwashita & Oda 1998). A disc rests on a slope while tan(slope) <= mu_r.
+                           ///< Default 0 (free rolling).
 } pl_material_def;
 
 pl_material_def pl_default_material_def(void);
@@ -79,7 +84,7 @@ pl_material_def pl_world_material(const pl_world *w, int material);
 /// Any field < 0 keeps the combined default. Combined defaults: kn, ks by series springs
 /// (2 k1 k2 / (k1 + k2), equal to k for equal materials), friction and cohesion the smaller.
 typedef struct pl_pair_def {
-    double kn, ks, friction, cohesion, cn, cs, restitution;
+    double kn, ks, friction, cohesion, cn, cs, restitution, rolling;
 } pl_pair_def;
 pl_pair_def pl_default_pair_def(void); ///< all fields -1 (keep defaults)
 pl_status pl_world_set_pair(pl_world *w, int material_a, int material_b, const pl_pair_def *def);

@@ -12,6 +12,11 @@
  * Conventions: the normal n points from a to b, the tangent t = (-n.y, n.x); the force on b is
  * +F = F_n n + F_t t, on a it is -F. The normal part passes through both centres, so the moment
  * about a centre at distance l from the contact point is -l F_t (eq. 2.20).
+ * Rolling resistance (material `rolling` = mu_r > 0; Iwashita & Oda 1998, the elastic-plastic
+ * "type C" of Ai et al. 2011 without its dashpot): M_r <- M_r - k_r (omega_b - omega_a) dt with
+ * k_r = k_S R^2, R = r_a r_b / (r_a + r_b) (a disc's radius on a wall), |M_r| <= mu_r R F_n
+ * (elastic normal force); +M_r on b, -M_r on a. Its spring energy joins the shear spring's, so
+ * the friction tally (integrate.c) also counts what the rolling limit dissipates.
  * For the exact energy tallies (integrate.c) the dashpot and tangential-spring parts are also
  * summed per body. */
 #ifndef PL_CONTACT_DISC_H
@@ -36,6 +41,7 @@ static inline void pl__untouch(pl_pair *p) {
     if (!p->touching) return; /* most listed pairs stay apart: do not rewrite them */
     p->touching = 0;
     p->fs = 0;
+    p->mr = 0;
     p->fn = 0;
     p->ft = 0;
     p->overlap = 0;
@@ -48,12 +54,12 @@ static inline double pl__cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y *
    respect to a's. arm_a, arm_b: distances from the disc centres to the contact point (the
    moment is then -arm F_t). A wall is not centred on the line of the normal force: pass its
    lever vector (contact point - wall centroid) in wall_r and its end (0: a, 1: b) in wall_end,
-   or wall_r = NULL for two discs. */
+   or wall_r = NULL for two discs. wrel = omega_b - omega_a and reff = R of the rolling law. */
 static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, pl_pair *p, const pl_pair_params *pp,
                                                                 double dt, int a, int b, pl_vec2 n, double delta,
                                                                 pl_vec2 point, double vn, double vt, double arm_a,
                                                                 double arm_b, double rmin, const pl_vec2 *wall_r,
-                                                                int wall_end) {
+                                                                int wall_end, double wrel, double reff) {
     const double fn_el = pp->kn * delta;
     const double fn_d = -p->cn * vn;
     const double fn = fn_el + fn_d;
@@ -70,7 +76,23 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
         fd = (fs + fd > 0 ? smax : -smax) - fs;
     }
     const double ft = fs + fd;
-    const double es = 0.5 * fs * fs * pp->inv_ks, en = 0.5 * fn_el * delta;
+    double es = 0.5 * fs * fs * pp->inv_ks;
+    const double en = 0.5 * fn_el * delta;
+    double mr = 0;
+    if (pp->rolling > 0) {
+        const double kr = pp->ks * reff * reff;
+        const double mmax = pp->rolling * reff * (fn_el > 0 ? fn_el : 0);
+        mr = p->mr - kr * wrel * dt;
+        if (fabs(mr) > mmax) mr = mr > 0 ? mmax : -mmax;
+        p->mr = mr;
+        if (kr > 0) es += 0.5 * mr * mr / kr;
+        c->torque[b] += mr;
+        c->torque[a] -= mr;
+        if (c->track) {
+            c->tally[b].sm += mr;
+            c->tally[a].sm -= mr;
+        }
+    }
     p->fs = fs;
     p->fn = fn;
     p->ft = ft;
@@ -152,7 +174,8 @@ static inline void pl__contact_disc_disc(pl_disc_ctx *c, pl_pair *p, const pl_pa
     const double wa = c->omega[a] * la, wb = c->omega[b] * lb;
     const pl_vec2 vrel = {vb.x + wb * n.y - va.x + wa * n.y, vb.y - wb * n.x - va.y - wa * n.x};
     const double vn = vrel.x * n.x + vrel.y * n.y, vt = -vrel.x * n.y + vrel.y * n.x;
-    pl__disc_law(c, p, pp, dt, a, b, n, delta, point, vn, vt, la, lb, ra < rb ? ra : rb, NULL, 0);
+    pl__disc_law(c, p, pp, dt, a, b, n, delta, point, vn, vt, la, lb, ra < rb ? ra : rb, NULL, 0,
+                 c->omega[b] - c->omega[a], ra * rb / rs);
 }
 
 static inline void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w, pl_pair *p, const pl_pair_params *pp,
@@ -187,11 +210,11 @@ static inline void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w, p
         const pl_vec2 nab = {-n.x, -n.y};
         const pl_vec2 vrel = {vw.x - vk.x, vw.y - vk.y};
         const double vn = vrel.x * nab.x + vrel.y * nab.y, vt = -vrel.x * nab.y + vrel.y * nab.x;
-        pl__disc_law(c, p, pp, dt, k, s, nab, delta, point, vn, vt, lk, 0, r, &rw, 1);
+        pl__disc_law(c, p, pp, dt, k, s, nab, delta, point, vn, vt, lk, 0, r, &rw, 1, c->omega[s] - c->omega[k], r);
     } else {
         const pl_vec2 vrel = {vk.x - vw.x, vk.y - vw.y};
         const double vn = vrel.x * n.x + vrel.y * n.y, vt = -vrel.x * n.y + vrel.y * n.x;
-        pl__disc_law(c, p, pp, dt, s, k, n, delta, point, vn, vt, 0, lk, r, &rw, 0);
+        pl__disc_law(c, p, pp, dt, s, k, n, delta, point, vn, vt, 0, lk, r, &rw, 0, c->omega[k] - c->omega[s], r);
     }
 }
 #endif

@@ -127,6 +127,7 @@ uint64_t pl_world_state_hash(const pl_world *w) {
         h = pl_hash_bytes(h, &p->a, sizeof p->a);
         h = pl_hash_bytes(h, &p->b, sizeof p->b);
         h = pl_hash_bytes(h, &p->fs, sizeof p->fs);
+        if (p->mr != 0) h = pl_hash_bytes(h, &p->mr, sizeof p->mr); /* rolling: no change without it */
         h = pl_hash_bytes(h, &p->area_prev, sizeof p->area_prev);
     }
     return pl__fluid_hash(w->fluid, h); /* pore-fluid state (no change without a fluid) */

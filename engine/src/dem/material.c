@@ -21,7 +21,7 @@ pl_material_def pl_default_material_def(void) {
 }
 
 pl_pair_def pl_default_pair_def(void) {
-    return (pl_pair_def){-1, -1, -1, -1, -1, -1, -1};
+    return (pl_pair_def){-1, -1, -1, -1, -1, -1, -1, -1};
 }
 
 /* Normal stiffness of one material: given directly, or from Young's modulus by seed 003
@@ -64,6 +64,8 @@ int pl_world_add_material(pl_world *w, const pl_material_def *def) {
         return pl__error(w, PL_ERR_ARG, "material '%s': young_overlap must be in (0, 1) (got %g)", def->name, def->young_overlap);
     if (!(def->friction >= 0) || !isfinite(def->friction))
         return pl__error(w, PL_ERR_ARG, "material '%s': friction must be >= 0 (got %g)", def->name, def->friction);
+    if (!(def->rolling >= 0) || !isfinite(def->rolling))
+        return pl__error(w, PL_ERR_ARG, "material '%s': rolling must be >= 0 (got %g)", def->name, def->rolling);
     if (!(def->cohesion >= 0))
         return pl__error(w, PL_ERR_ARG, "material '%s': cohesion must be >= 0 (got %g)", def->name, def->cohesion);
     if (!(def->cn >= 0))
@@ -143,6 +145,7 @@ void pl__update_pair_params(pl_world *w) {
             p.ks = o->ks >= 0 ? o->ks : series(material_ks(a), material_ks(b));
             p.friction = o->friction >= 0 ? o->friction : fmin(a->friction, b->friction);
             p.cohesion = o->cohesion >= 0 ? o->cohesion : fmin(a->cohesion, b->cohesion);
+            p.rolling = o->rolling >= 0 ? o->rolling : fmin(a->rolling, b->rolling);
             p.cn = o->cn >= 0 ? o->cn : 0.5 * (a->cn + b->cn);
             double csa = a->cs >= 0 ? a->cs : (material_kn(a) > 0 ? a->cn * material_ks(a) / material_kn(a) : 0);
             double csb = b->cs >= 0 ? b->cs : (material_kn(b) > 0 ? b->cn * material_ks(b) / material_kn(b) : 0);

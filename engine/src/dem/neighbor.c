@@ -253,6 +253,7 @@ static pl_status rebuild(pl_world *w) {
             if (old < w->pair_n && w->pairs[old].a == a && w->pairs[old].b == b) {
                 const pl_pair *q = &w->pairs[old];
                 p->fs = q->fs;
+                p->mr = q->mr;
                 p->fn = q->fn;
                 p->ft = q->ft;
                 p->overlap = q->overlap;

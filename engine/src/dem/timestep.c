@@ -25,7 +25,8 @@ void pl__compute_dt(pl_world *w) {
         uint8_t *used = calloc((size_t)nm, 1);
         double *kn = calloc((size_t)nm, sizeof *kn), *ks = calloc((size_t)nm, sizeof *ks);
         double *cn = calloc((size_t)nm, sizeof *cn), *zeta = calloc((size_t)nm, sizeof *zeta);
-        if (used && kn && ks && cn && zeta) {
+        double *roll = calloc((size_t)nm, sizeof *roll);
+        if (used && kn && ks && cn && zeta && roll) {
             for (int i = 0; i < w->n; i++) used[w->material[i]] = 1;
             for (int a = 0; a < nm; a++)
                 for (int b = 0; b < nm; b++) {
@@ -35,6 +36,7 @@ void pl__compute_dt(pl_world *w) {
                     ks[a] = fmax(ks[a], p->ks);
                     cn[a] = fmax(cn[a], p->cn);
                     zeta[a] = fmax(zeta[a], p->zeta);
+                    roll[a] = fmax(roll[a], p->rolling);
                 }
             for (int i = 0; i < w->n; i++) {
                 if (w->motion[i] != PL_MOTION_DYNAMIC || !(w->mass[i] > 0)) continue;
@@ -48,7 +50,10 @@ void pl__compute_dt(pl_world *w) {
                     r.limit_kind = "translation";
                 }
                 const double rr = w->radius[i];
-                const double krot = (w->shape[i] == PL_SHAPE_DISC ? ks[m] : fmax(kn[m], ks[m])) * rr * rr;
+                /* a disc with rolling resistance has the rolling spring (k_S R^2, R <= r) beside
+                   the shear spring's k_S r^2 */
+                const double kdisc = roll[m] > 0 ? 2 * ks[m] : ks[m];
+                const double krot = (w->shape[i] == PL_SHAPE_DISC ? kdisc : fmax(kn[m], ks[m])) * rr * rr;
                 const double dtr = damped_limit(w->inertia[i], krot, 0);
                 if (dtr < r.dt_critical) {
                     r.dt_critical = dtr;
@@ -57,7 +62,7 @@ void pl__compute_dt(pl_world *w) {
                 }
             }
         }
-        free(used); free(kn); free(ks); free(cn); free(zeta);
+        free(used); free(kn); free(ks); free(cn); free(zeta); free(roll);
     }
     if (w->def.dt > 0) {
         r.dt = w->def.dt;

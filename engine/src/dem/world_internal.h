@@ -13,6 +13,7 @@ typedef struct pl_pair_params {
     double kn, ks;      /* N/m */
     double inv_ks;      /* 1/ks (0 when ks = 0), for the shear spring energy */
     double friction;    /* mu */
+    double rolling;     /* rolling resistance mu_r (0: free rolling) */
     double cohesion;    /* N */
     double cn, cs;      /* N s/m, used when restitution < 0 */
     double restitution; /* < 0: use cn/cs; else damping ratio from e with the pair's mass */
@@ -44,6 +45,7 @@ typedef struct pl_pair {
     int32_t params;       /* index into world->pair_params (material pair) */
     double cn, cs;        /* dashpots of this pair (from restitution and the pair's masses), N s/m */
     double fs;            /* shear (tangential) spring force, N (history) */
+    double mr;            /* rolling spring moment on b, N m (history; discs with rolling resistance) */
     double fn;            /* normal force of the last evaluation, N (elastic + damping) */
     double ft;            /* tangential force of the last evaluation, N (on b along t) */
     double overlap;       /* overlap depth, m (polygons: area / contact length) */
