@@ -3,6 +3,7 @@
 pl_add_c_test(test_soil_terzaghi SOURCES ${PL_TEST_DIR}/soil/test_soil_terzaghi.c LABEL soil TIMEOUT 60)
 pl_add_c_test(test_soil_undrained SOURCES ${PL_TEST_DIR}/soil/test_soil_undrained.c LABEL soil TIMEOUT 120)
 pl_add_c_test(test_soil_quicksand SOURCES ${PL_TEST_DIR}/soil/test_soil_quicksand.c LABEL soil TIMEOUT 120)
+pl_add_c_test(test_soil_overburden SOURCES ${PL_TEST_DIR}/soil/test_soil_overburden.c LABEL soil TIMEOUT 60)
 # The liquefaction scene run whole; its on_finish asserts the r_u criteria (docs/soil.md §5.3).
 if(TARGET porelab)
   add_test(NAME soil_liquefaction COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/soil/liquefaction.lua -q
