@@ -14,8 +14,10 @@
  *                      flags and counters mesh_dirty, bc_dirty, built, k_dirty, have_solution,
  *                      static_valid, initialised, refresh_pending (a query applied changed
  *                      lines: the next step still restarts the fluid), steps_since (the fluid
- *                      update's phase against the grain steps), geom_since (the porosity update's), time_since, time, out_time,
- *                      src_active; the resolved
+ *                      update's phase against the grain steps), geom_since (the phase of the
+ *                      cuts, FLUID_POROSITY_TIMESTEPS), time_since, time, out_time,
+ *                      src_active; the accelerating frame frame_body_plus1 (input) and
+ *                      frame_acc (the drag between updates uses it); the resolved
  *                      parameters par and assembled_par (flags changed in between take effect
  *                      at the next update); output progress geometry_written,
  *                      pressures_started; statistics stats, t_source, last_src_abs
