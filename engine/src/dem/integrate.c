@@ -16,17 +16,28 @@
 
 static double sgn(double x) { return (x > 0) - (x < 0); }
 
-/* Position factor of a sinusoid at time t (clamped to its interval): e(t) sin(2 pi f tau),
-   tau = t - t_start, with the raised-cosine envelope e of its ramp (1 without a ramp). */
+/* Raised-cosine ramp of a sinusoid at time t: envelope e and its first two time derivatives
+   (e = 1, 0, 0 without a ramp or between the ramps). */
+static void ramp_envelope(const pl_motion *m, double t, double *e, double *de, double *dde) {
+    *e = 1;
+    *de = *dde = 0;
+    if (!(m->ramp > 0)) return;
+    const double tau = t - m->t_start, left = m->t_stop - t; /* left infinite without an end */
+    const double k = M_PI / m->ramp;
+    double x, sgn_d;
+    if (tau < m->ramp) { x = tau; sgn_d = 1; }
+    else if (left < m->ramp) { x = left; sgn_d = -1; }
+    else return;
+    *e = 0.5 * (1 - cos(M_PI * x / m->ramp));
+    *de = sgn_d * 0.5 * k * sin(k * x);
+    *dde = 0.5 * k * k * cos(k * x);
+}
+
+/* Position factor of a sinusoid at time t (clamped to its interval): e(t) sin(2 pi f tau). */
 static double sinusoid_at(const pl_motion *m, double t) {
-    const double tau = t - m->t_start;
-    double e = 1;
-    if (m->ramp > 0) {
-        const double left = m->t_stop - t; /* infinite for a shaking without end */
-        if (tau < m->ramp) e = 0.5 * (1 - cos(M_PI * tau / m->ramp));
-        else if (left < m->ramp) e = 0.5 * (1 - cos(M_PI * left / m->ramp));
-    }
-    return e * sin(2 * M_PI * m->frequency * tau);
+    double e, de, dde;
+    ramp_envelope(m, t, &e, &de, &dde);
+    return e * sin(2 * M_PI * m->frequency * (t - m->t_start));
 }
 
 int pl__law_acceleration(const pl_motion *m, double t, pl_vec2 *acc) {
@@ -36,15 +47,8 @@ int pl__law_acceleration(const pl_motion *m, double t, pl_vec2 *acc) {
     if (t < m->t_start || t > m->t_stop) return 1;
     /* x = A e(tau) sin(w tau): x'' = A (e'' sin + 2 e' w cos - e w^2 sin) */
     const double tau = t - m->t_start, om = 2 * M_PI * m->frequency;
-    double e = 1, de = 0, dde = 0;
-    if (m->ramp > 0) {
-        const double left = m->t_stop - t, k = M_PI / m->ramp;
-        if (tau < m->ramp) {
-            e = 0.5 * (1 - cos(k * tau)); de = 0.5 * k * sin(k * tau); dde = 0.5 * k * k * cos(k * tau);
-        } else if (left < m->ramp) {
-            e = 0.5 * (1 - cos(k * left)); de = -0.5 * k * sin(k * left); dde = 0.5 * k * k * cos(k * left);
-        }
-    }
+    double e, de, dde;
+    ramp_envelope(m, t, &e, &de, &dde);
     const double s = sin(om * tau), c = cos(om * tau);
     const double f = dde * s + 2 * de * om * c - e * om * om * s;
     *acc = (pl_vec2){m->amplitude.x * f, m->amplitude.y * f};
