@@ -13,7 +13,7 @@ set -e
 BIN=${1:-build/app/porelab}
 SCENE=scenes/soil/liquefaction.lua
 OUT=${TMPDIR:-/tmp}/bench_soil
-T_END=5.0
+T_END=6.2   # the scene's run.t_end
 run() { # $1 label, rest: options; prints "wall cpu"
   label=$1; shift
   /usr/bin/time -f "%e %U %S" -o "$OUT/$label.time" "$BIN" run "$SCENE" --out "$OUT/$label" "$@" \
