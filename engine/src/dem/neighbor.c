@@ -127,7 +127,23 @@ static int near_enough(const pl_world *w, int a, int b) {
     }
     const double dx = w->pos[b].x - w->pos[a].x, dy = w->pos[b].y - w->pos[a].y;
     const double r = w->radius[a] + w->radius[b] + skin;
-    return dx * dx + dy * dy < r * r;
+    if (!(dx * dx + dy * dy < r * r)) return 0;
+    if (w->shape[a] + w->shape[b] != PL_SHAPE_DISC + PL_SHAPE_POLYGON) return 1;
+    /* disc and convex polygon: the bounding circle of a long polygon (a wall slab, a lid)
+       takes in every disc within its half-length. The disc is out of reach when its centre
+       lies beyond some edge's line by r + skin or more (separating axis; a lower bound of the
+       gap, so no pair that can touch before the next build is dropped: between builds every
+       point of an outline moves by less than half the skin, turning included). */
+    const int d = w->shape[a] == PL_SHAPE_DISC ? a : b, q = d == a ? b : a;
+    const pl_vec2 c = w->pos[d], *v = &w->verts_world[w->vert_offset[q]];
+    const int n = w->vert_count[q];
+    const double reach = w->radius[d] + skin;
+    for (int i = 0; i < n; i++) {
+        const pl_vec2 p = v[i], e = {v[i + 1 < n ? i + 1 : 0].x - p.x, v[i + 1 < n ? i + 1 : 0].y - p.y};
+        const double out = e.y * (c.x - p.x) - e.x * (c.y - p.y); /* |e| x distance outside (CCW) */
+        if (out > 0 && out * out >= reach * reach * (e.x * e.x + e.y * e.y)) return 0;
+    }
+    return 1;
 }
 
 static void sort_small(int32_t *v, int n) {
