@@ -904,6 +904,31 @@ static const uint8_t *seg_lut(pl_aa *aa, double hw, double nx, double ny, int *n
     return row;
 }
 
+/* Distance of a pixel centre from the segment a-b: q = centre - a, t and c its coordinates along
+   and across the segment's direction, r = centre - b (y part), len and dx of the segment. */
+static inline __attribute__((always_inline)) float seg_distance(float qx, float qy, float ry, float t, float c,
+                                                                float flen, float fdx) {
+    if (t <= 0.0f) return sqrtf(qx * qx + qy * qy);
+    if (t >= flen) {
+        const float rx = qx - fdx;
+        return sqrtf(rx * rx + ry * ry);
+    }
+    return fabsf(c);
+}
+
+/* Coverage m (1..255) of pixel x of a row: blended into the image (px), or kept as the row's
+   coverage mask (out) for a batch; incremental batches blend only what exceeds the mask. */
+static inline __attribute__((always_inline)) void put_cov(const pl_aa *aa, uint32_t *px, uint8_t *out, int x,
+                                                          unsigned m, int incr) {
+    if (incr) {
+        const unsigned m0 = out[x];
+        if (m <= m0) return;
+        out[x] = (uint8_t)m;
+        px[x] = blend8(aa, px[x], incr_cov(m0, m));
+    } else if (px) px[x] = blend8(aa, px[x], m);
+    else if (m > out[x]) out[x] = (uint8_t)m;
+}
+
 void pl_aa_thin_segment(pl_aa *aa, pl_vec2 a, pl_vec2 b, double w) {
     double hw = 0.5 * w;
     if (!(hw > 0.0)) return;
@@ -958,32 +983,15 @@ void pl_aa_thin_segment(pl_aa *aa, pl_vec2 a, pl_vec2 b, double w) {
         float t = fux * qx + fuy * qy, c = fux * qy - fuy * qx;
         if (inside && lut) { /* the common case: tabulated coverage, no clipping */
             for (int x = xa; x < xb; x++, qx += 1.0f, t += fux, c -= fuy) {
-                float d;
-                if (t <= 0.0f) d = sqrtf(qx * qx + qy * qy);
-                else if (t >= flen) {
-                    float rx = qx - fdx;
-                    d = sqrtf(rx * rx + ry * ry);
-                } else d = fabsf(c);
+                const float d = seg_distance(qx, qy, ry, t, c, flen, fdx);
                 int li = (int)(d * LUT_RES + 0.5f);
                 unsigned m = li < lut_n ? lut[li] : 0u;
-                if (!m) continue;
-                if (incr) {
-                    unsigned m0 = out[x];
-                    if (m <= m0) continue;
-                    out[x] = (uint8_t)m;
-                    px[x] = blend8(aa, px[x], incr_cov(m0, m));
-                } else if (px) px[x] = blend8(aa, px[x], m);
-                else if (m > out[x]) out[x] = (uint8_t)m;
+                if (m) put_cov(aa, px, out, x, m, incr);
             }
             continue;
         }
         for (int x = xa; x < xb; x++, qx += 1.0f, t += fux, c -= fuy) {
-            float d;
-            if (t <= 0.0f) d = sqrtf(qx * qx + qy * qy);
-            else if (t >= flen) {
-                float rx = qx - fdx;
-                d = sqrtf(rx * rx + ry * ry);
-            } else d = fabsf(c);
+            const float d = seg_distance(qx, qy, ry, t, c, flen, fdx);
             unsigned m;
             if (d <= full) m = 255u; /* the pixel lies inside the band */
             else {
@@ -1003,13 +1011,7 @@ void pl_aa_thin_segment(pl_aa *aa, pl_vec2 a, pl_vec2 b, double w) {
                 m = cov8((float)(dmax(0.0, fx) * dmax(0.0, fyc)));
                 if (!m) continue;
             }
-            if (incr) {
-                unsigned m0 = out[x];
-                if (m <= m0) continue;
-                out[x] = (uint8_t)m;
-                px[x] = blend8(aa, px[x], incr_cov(m0, m));
-            } else if (px) px[x] = blend8(aa, px[x], m);
-            else if (m > out[x]) out[x] = (uint8_t)m;
+            put_cov(aa, px, out, x, m, incr);
         }
     }
     if (!px_any || incr) push_rect(aa, (aa_rect){px0, py0, px1, py1});

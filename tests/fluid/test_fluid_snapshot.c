@@ -288,6 +288,16 @@ static int transient_restores(void) {
     return r;
 }
 
+/* Steps n from the snapshot s, restores it and steps n again: the same state hash. */
+static int replays_same(pl_world *w, const pl_snapshot *s, int n) {
+    ENSURE(pl_world_step(w, n) == PL_OK);
+    const uint64_t h1 = pl_world_state_hash(w);
+    ENSURE(pl_world_restore(w, s) == PL_OK);
+    ENSURE(pl_world_step(w, n) == PL_OK);
+    ENSURE(pl_world_state_hash(w) == h1);
+    return 0;
+}
+
 /* A snapshot of the world as built (mesh not made yet), and one after a query at t = 0 (the
    static field computed ahead of the first step). */
 static int fresh_world_restores(void) {
@@ -297,11 +307,7 @@ static int fresh_world_restores(void) {
     ENSURE(pl_world_fluid_node_count(w) > 0); /* query: static solve before the first step */
     pl_snapshot *s = pl_world_snapshot(w);
     ENSURE(s);
-    ENSURE(pl_world_step(w, 100) == PL_OK);
-    uint64_t h1 = pl_world_state_hash(w);
-    ENSURE(pl_world_restore(w, s) == PL_OK);
-    ENSURE(pl_world_step(w, 100) == PL_OK);
-    ENSURE(pl_world_state_hash(w) == h1);
+    if (replays_same(w, s, 100)) return 1;
     pl_snapshot_destroy(&s);
     pl_world_destroy(&w);
     return 0;
@@ -315,11 +321,8 @@ static int dirty_inputs_restore(void) {
     quicksand_bcs(w, 0.006);
     pl_snapshot *s = pl_world_snapshot(w);
     ENSURE(s);
-    ENSURE(pl_world_step(w, 100) == PL_OK);
-    uint64_t h1 = pl_world_state_hash(w);
-    ENSURE(pl_world_restore(w, s) == PL_OK);
-    ENSURE(pl_world_step(w, 100) == PL_OK);
-    ENSURE(pl_world_state_hash(w) == h1);
+    if (replays_same(w, s, 100)) return 1;
+    const uint64_t h1 = pl_world_state_hash(w); /* 100 steps after the snapshot */
     /* a second fluid quad above the first: another mesh */
     ENSURE(pl_world_restore(w, s) == PL_OK);
     pl_fluid_quad_def q = pl_default_fluid_quad_def();
@@ -345,11 +348,7 @@ static int dirty_inputs_restore(void) {
     pl_world_fluid_pressure_at(w, (pl_vec2){0.5 * W, 0.5 * H}, &pr, &hd);
     s = pl_world_snapshot(w);
     ENSURE(s);
-    ENSURE(pl_world_step(w, 60) == PL_OK);
-    h1 = pl_world_state_hash(w);
-    ENSURE(pl_world_restore(w, s) == PL_OK);
-    ENSURE(pl_world_step(w, 60) == PL_OK);
-    ENSURE(pl_world_state_hash(w) == h1);
+    if (replays_same(w, s, 60)) return 1;
     pl_snapshot_destroy(&s);
     pl_world_destroy(&w);
     return 0;

@@ -139,7 +139,7 @@ static int near_enough(const pl_world *w, int a, int b) {
     const int n = w->vert_count[q];
     const double reach = w->radius[d] + skin;
     for (int i = 0; i < n; i++) {
-        const pl_vec2 p = v[i], e = {v[i + 1 < n ? i + 1 : 0].x - p.x, v[i + 1 < n ? i + 1 : 0].y - p.y};
+        const pl_vec2 p = v[i], q1 = v[i + 1 < n ? i + 1 : 0], e = {q1.x - p.x, q1.y - p.y};
         const double out = e.y * (c.x - p.x) - e.x * (c.y - p.y); /* |e| x distance outside (CCW) */
         if (out > 0 && out * out >= reach * reach * (e.x * e.x + e.y * e.y)) return 0;
     }

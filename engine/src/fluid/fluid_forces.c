@@ -345,12 +345,12 @@ void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i, pl
         const double rg = f->par.density * f->par.g;
         /* the drag follows the flux q = -D (grad h + a/g): in an accelerating frame the part of
            grad h that accelerates the water (-a/g) drives no flow */
-        const double fx = f->frame_acc.x / f->par.g, fy = f->frame_acc.y / f->par.g;
+        const pl_vec2 fa = pl_fl_frame_gradient(f);
         for (int k = f->body_cover_start[i]; k < f->body_cover_start[i + 1]; k++) {
             const pl_fl_cover *cv = &f->cover[k];
             double w = cv->area * f->voidr[cv->elem] * rg;
-            force->x -= w * (f->grad[2 * cv->elem] + fx);
-            force->y -= w * (f->grad[2 * cv->elem + 1] + fy);
+            force->x -= w * (f->grad[2 * cv->elem] + fa.x);
+            force->y -= w * (f->grad[2 * cv->elem + 1] + fa.y);
         }
     }
 }

@@ -244,6 +244,10 @@ double pl_fl_porosity_3d(double n2d);
 
 /* fields (fluid_field.c) */
 double pl_fl_z(const struct pl_fluid *f, pl_vec2 p);     /* elevation along -gravity */
+/* a/g of the accelerating frame (zero without one): Darcy's flux is q = -D (grad h + a/g) */
+static inline pl_vec2 pl_fl_frame_gradient(const struct pl_fluid *f) {
+    return (pl_vec2){f->frame_acc.x / f->par.g, f->frame_acc.y / f->par.g};
+}
 double pl_fl_node_pressure(const struct pl_fluid *f, int node);
 void pl_fl_update_gradients(struct pl_fluid *f);
 /* Pressure (Pa) at p; returns the element or -1 outside (pressure 0 then). */

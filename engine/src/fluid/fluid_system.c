@@ -260,7 +260,8 @@ void pl_fl_assemble(struct pl_fluid *f) {
    that accelerates the water, at head lines the flow that a fixed free surface lets through. */
 void pl_fl_add_frame_load(const struct pl_fluid *f, double *r) {
     const pl_fl_mesh *m = &f->mesh;
-    const double ax = f->frame_acc.x / f->par.g, ay = f->frame_acc.y / f->par.g;
+    const pl_vec2 fa = pl_fl_frame_gradient(f);
+    const double ax = fa.x, ay = fa.y;
     if (ax == 0 && ay == 0) return;
     for (int e = 0; e < m->ne; e++) {
         const double *bc = &m->bc[6 * e];

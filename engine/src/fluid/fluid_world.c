@@ -500,12 +500,12 @@ int pl_world_fluid_copy_element_field(pl_world *w, pl_fluid_element_field field,
     int n = f->mesh.ne < cap ? f->mesh.ne : cap;
     /* Darcy flux q = -D (grad h + a/g): in a shaking table's frame (pl_world_fluid_set_frame)
        the part of grad h that accelerates the water drives no flow (as for the drag) */
-    const double ax = f->frame_acc.x / f->par.g, ay = f->frame_acc.y / f->par.g;
+    const pl_vec2 fa = pl_fl_frame_gradient(f);
     for (int e = 0; e < n; e++) {
         double kx = f->perm[e], ky = f->perm[e] * f->quads[f->mesh.tri_quad[e]].anisotropy;
         switch (field) {
-        case PL_FLUID_VELOCITY_X: out[e] = -kx * (f->grad[2 * e] + ax); break;
-        case PL_FLUID_VELOCITY_Y: out[e] = -ky * (f->grad[2 * e + 1] + ay); break;
+        case PL_FLUID_VELOCITY_X: out[e] = -kx * (f->grad[2 * e] + fa.x); break;
+        case PL_FLUID_VELOCITY_Y: out[e] = -ky * (f->grad[2 * e + 1] + fa.y); break;
         case PL_FLUID_POROSITY: out[e] = f->porosity[e]; break;
         case PL_FLUID_VOID_RATIO: out[e] = f->voidr[e]; break;
         case PL_FLUID_PERM_X: out[e] = kx; break;
