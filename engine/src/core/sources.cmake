@@ -1,1 +1,1 @@
-list(APPEND PL_ENGINE_SOURCES src/core/status.c src/core/hash.c)
+list(APPEND PL_ENGINE_SOURCES src/core/status.c src/core/hash.c src/core/params.c)
