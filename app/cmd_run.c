@@ -88,6 +88,10 @@ static int frame(run_ctx *c)
         print_stop(c, "the scene's render.overlay raised an error (above)");
         return -1;
     }
+    if (pl_render_prepare(c->w, c->ropt, c->vtk != NULL) != PL_OK) {
+        print_stop(c, pl_world_last_error(c->w));
+        return -1;
+    }
     if ((c->gfw ? pl_gl_frames_add(c->gfw, c->w, c->ropt, err, sizeof err)
                 : pl_frame_writer_add(c->fw, c->w, c->ropt, err, sizeof err)) != 0) {
         print_stop(c, err);

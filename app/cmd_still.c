@@ -123,7 +123,9 @@ int pl_cmd_still(int argc, char **argv)
         char err[1024];
         pl_draw_list overlay;
         pl_draw_list_init(&overlay);
-        if (rc != PL_EXIT_USAGE && st == PL_OK && pl_cli_overlay(&o, s, &overlay, &ropt) == 0) {
+        if (rc != PL_EXIT_USAGE && st == PL_OK && pl_render_prepare(w, &ropt, 0) != PL_OK) {
+            fprintf(stderr, "porelab: %s\n", pl_world_last_error(w));
+        } else if (rc != PL_EXIT_USAGE && st == PL_OK && pl_cli_overlay(&o, s, &overlay, &ropt) == 0) {
             if ((use_gl ? pl_gl_cli_still(w, &ropt, file, err, sizeof err)
                         : pl_render_to_file(w, &ropt, file, err, sizeof err)) != 0) {
                 fprintf(stderr, "porelab: cannot write %s: %s\n", file, err);

@@ -208,7 +208,7 @@ int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_
     unsigned fluid = PL_LAYER_MESH | PL_LAYER_PRESSURE | PL_LAYER_ISOLINES | PL_LAYER_VELOCITY;
     if (pl_render_scene_capture(&fw->scene, w) ||
         ((opt->layers & fluid) &&
-         pl_render_scene_capture_fluid(&fw->scene, (pl_world *)w, opt->fluid_field))) {
+         pl_render_scene_capture_fluid(&fw->scene, w, opt->fluid_field))) {
         snprintf(err, errlen, "out of memory while reading the world");
         return -1;
     }

@@ -228,6 +228,21 @@ pl_dt_report pl_world_dt_report(pl_world *w);
 
 /// Advances n steps. Stops early and returns PL_ERR_UNSTABLE (message in last_error) when a
 /// guard fires; the world then stays at the last good state for queries.
+/// Builds what the queries read without advancing time: every attached model meshes, applies
+/// changed boundary conditions and computes its initial field (with FIRST_STEP_STATIC, the
+/// static solution the first step will use). Queries never build anything themselves; call
+/// this after changing a model's input and before reading its fields (a frame at t = 0).
+/// Stepping prepares by itself. Preparing does not change the results of later steps.
+pl_status pl_world_prepare(pl_world *w);
+
+/// Models attached to the world (world/models.c registry), in attachment order: their count,
+/// short name ("darcy", "hydrostatic"), one-line description, and the CPU seconds they spent so
+/// far with the number of their updates (for `porelab info`).
+int pl_world_model_count(const pl_world *w);
+const char *pl_world_model_name(const pl_world *w, int k);
+const char *pl_world_model_label(const pl_world *w, int k);
+double pl_world_model_cost(const pl_world *w, int k, long *calls);
+
 pl_status pl_world_step(pl_world *w, int n);
 double pl_world_time(const pl_world *w);
 int64_t pl_world_step_count(const pl_world *w);

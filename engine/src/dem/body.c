@@ -183,7 +183,7 @@ static int bad_body(const pl_world *w, int i) { return i < 0 || i >= w->n; }
 
 #define CHECK_BODY(w, i, what)                                                                  \
     if (bad_body(w, i))                                                                         \
-    return pl__error((pl_world *)(w), PL_ERR_ARG, "%s: body index must be in 0..%d (got %d)", what, \
+    return pl__error(w, PL_ERR_ARG, "%s: body index must be in 0..%d (got %d)", what, \
                      (w)->n - 1, i)
 
 pl_status pl_world_body_info(const pl_world *w, int i, pl_body_info *o) {

@@ -88,7 +88,8 @@ typedef struct pl_tally {
 
 struct pl_world {
     pl_world_def def;
-    char error[PL_ERR_LEN];
+    char *error;                  /* PL_ERR_LEN bytes: the last error message. A buffer of its own, so
+                                     that a read-only query can report through a const world */
 
     /* materials */
     pl_material *materials;
@@ -177,7 +178,7 @@ struct pl_world {
 };
 
 /* Error helper: formats into w->error and returns status. */
-pl_status pl__error(pl_world *w, pl_status s, const char *fmt, ...)
+pl_status pl__error(const pl_world *w, pl_status s, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
