@@ -1,4 +1,3 @@
-#define _POSIX_C_SOURCE 200809L /* SIGXFSZ */
 #include "report.h"
 #include "wrap_csv.h"
 

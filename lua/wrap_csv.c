@@ -2,9 +2,10 @@
  * folder. csv:row(v1, v2, ...) or csv:row{v1, v2, ...}; csv:close().
  *
  * Survives faults: rows are kept in memory as whole lines and written with write(2) only as
- * whole lines - when 64 KiB have gathered, when the program flushes every open CSV (after
- * each output frame and when a run stops, pl_lua_csv_flush_all), and at close - so a kill
- * leaves a file that ends in a whole line. A write that fails (full disk, file size limit)
+ * whole lines - when 64 KiB have gathered or a second has passed since the last write, when
+ * the program flushes every open CSV (after each output frame, pl_lua_csv_flush_all), and
+ * at close (the program closes every CSV when a run ends or stops) - so a kill leaves a
+ * file that ends in a whole line. A write that fails (full disk, file size limit)
  * cuts the file back to its last whole line and is reported: by csv:row/csv:close as a Lua
  * error, by pl_lua_csv_flush_all/pl_lua_csv_close_all to the program, which then exits
  * non-zero even when the scene never calls close. */
@@ -18,9 +19,18 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #define CSV_FLUSH_BYTES (64 * 1024)
+#define CSV_FLUSH_SECONDS 1.0 /* also without frames (imperative scripts, the window) */
+
+static double monotonic_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
 
 typedef struct csv_ud csv_ud;
 
@@ -37,6 +47,7 @@ struct csv_ud {
     char *buf;       /* whole lines not yet written */
     size_t len, cap;
     long long written; /* bytes in the file, all whole lines */
+    double last_flush; /* monotonic s */
     int failed;      /* errno of the write that failed, 0 when none */
     int reported;    /* the failure was reported (each failure is reported once) */
     csv_registry *reg;
@@ -117,7 +128,13 @@ static int csv_flush(csv_ud *c)
         if (k < 0 && errno == EINTR) continue;
         if (k <= 0) {
             c->failed = k < 0 ? errno : EIO;
-            if (ftruncate(c->fd, (off_t)c->written) != 0) { /* keep the first cause */ }
+            /* keep the whole lines that got through, drop the piece of the next one */
+            size_t whole = done;
+            while (whole > 0 && c->buf[whole - 1] != '\n') whole--;
+            if (ftruncate(c->fd, (off_t)(c->written + (long long)whole)) != 0) {
+                /* nothing better to do: the first cause is the one reported */
+            }
+            c->written += (long long)whole;
             c->len = 0;
             return -1;
         }
@@ -125,6 +142,7 @@ static int csv_flush(csv_ud *c)
     }
     c->written += (long long)c->len;
     c->len = 0;
+    c->last_flush = monotonic_seconds();
     return 0;
 }
 
@@ -198,6 +216,7 @@ int pl_lua_csv_new(lua_State *L)
         pl_lua_error(L, "%s: cannot write '%s': %s", fn, c->path, strerror(e));
     }
     c->columns = n;
+    c->last_flush = monotonic_seconds();
     for (int i = 1; i <= n; i++) {
         lua_geti(L, 2, i);
         if (i > 1) put(c, ",", 1);
@@ -250,7 +269,10 @@ static int c_row(lua_State *L)
         put_field(c, L, first + i);
     }
     put(c, "\n", 1);
-    if (c->len >= CSV_FLUSH_BYTES && csv_flush(c) != 0) raise_failure(L, fn, c);
+    double now = monotonic_seconds();
+    if ((c->len >= CSV_FLUSH_BYTES || now - c->last_flush >= CSV_FLUSH_SECONDS) &&
+        csv_flush(c) != 0)
+        raise_failure(L, fn, c);
     return 0;
 }
 
