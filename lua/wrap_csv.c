@@ -224,6 +224,14 @@ int pl_lua_csv_new(lua_State *L)
         lua_pop(L, 1);
     }
     put(c, "\n", 1);
+    if (csv_flush(c) != 0) { /* the header at once: the file is never empty */
+        int e = c->failed;
+        close(c->fd);
+        c->fd = -1;
+        free(c->buf);
+        c->buf = NULL;
+        pl_lua_error(L, "%s: cannot write '%s': %s", fn, c->path, strerror(e));
+    }
     csv_registry *r = get_registry(L);
     if (r) {
         c->reg = r;

@@ -3,7 +3,7 @@
 # checks what it leaves: every PNG under its final name is whole (PNG signature, IEND as
 # the last chunk, and libpng decodes it through imgdiff) and every CSV ends in a whole line
 # with the header's number of fields on every line. Hidden temporaries (.NAME.tmp-PID.png)
-# may remain. Bounded: ITER kills, each 0.15..0.75 s into the run.
+# may remain. Bounded: ITER kills, each 0.15..0.75 s after the second frame.
 #   kill_run.sh PORELAB IMGDIFF SCENE OUT [ITER] [SEED]
 set -u
 exe=$1 imgdiff=$2 scene=$3 out=$4 iter=${5:-5} seed=${6:-13}
@@ -18,6 +18,13 @@ while [ "$i" -lt "$iter" ]; do
   ms=$(( 150 + (seed / 65536) % 600 ))
   "$exe" run "$scene" --quiet --out "$dir" &
   pid=$!
+  # the random moment counts from the second frame (a loaded machine may take a while to
+  # start); give up waiting after 20 s
+  waited=0
+  while [ ! -e "$dir/frame_000001.png" ] && [ "$waited" -lt 400 ] && kill -0 "$pid" 2>/dev/null; do
+    sleep 0.05
+    waited=$((waited + 1))
+  done
   sleep "$(printf '%d.%03d' $((ms / 1000)) $((ms % 1000)))"
   kill -9 "$pid" 2>/dev/null
   wait "$pid" 2>/dev/null
