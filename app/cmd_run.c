@@ -218,8 +218,8 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     if (pl_report_close_csv(stderr, s) != 0) {
         if (rc == PL_EXIT_OK)
             fprintf(stderr, "porelab: the run reached t = %.6g s, but its output is incomplete "
-                            "(above); %d frames in %s/\n", pl_world_time(w), frame_count(&c),
-                    out_dir);
+                            "(above); %d frame%s in %s/\n", pl_world_time(w), frame_count(&c),
+                    frame_count(&c) == 1 ? "" : "s", out_dir);
         rc = PL_EXIT_FAIL;
     }
     double wall = pl_wall_seconds() - prog.wall_start;
