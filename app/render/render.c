@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atomic_file.h"
 #include "backend_cairo.h"
 #include "draw_world.h"
 
@@ -335,7 +336,17 @@ int pl_render_to_file(const pl_world *w, const pl_render_options *opt, const cha
     pl_draw_list dl;
     pl_draw_list_init(&dl);
     int rc = pl_render_build(w, opt, &dl, err, errlen);
-    if (rc == 0) rc = pl_cairo_write_file(&dl, path, 6, err, errlen);
+    if (rc == 0 && pl_file_format(path) == 0) {
+        rc = pl_cairo_write_file(&dl, path, 6, err, errlen); /* pl_png_write renames itself */
+    } else if (rc == 0) {
+        /* SVG/PDF: cairo writes the temporary, which is renamed into place when complete */
+        pl_atomic_file af;
+        rc = pl_atomic_file_begin(&af, path, err, errlen);
+        if (rc == 0) {
+            rc = pl_cairo_write_file(&dl, af.tmp_path, 6, err, errlen);
+            rc = pl_atomic_file_end(&af, rc == 0, err, errlen);
+        }
+    }
     pl_draw_list_free(&dl);
     return rc;
 }

@@ -196,3 +196,6 @@ pl_cli_test(bad_chart RC 1 ARGS run ${PL_BAD}/bad_chart.lua --quiet --out ${PL_C
 pl_cli_test(sandbox_chart_outside RC 1
   ARGS run ${PL_BAD}/chart_outside.lua --quiet --out ${PL_CLI_OUT}/chart_outside
   MATCH "chart_outside.lua:2: chart: writing '../../escape.png' is not allowed")
+
+# Faults: kills, failed writes, hangs turned into range errors (tests/cli/faults/).
+include(${PL_CLI_DIR}/faults/tests.cmake)
