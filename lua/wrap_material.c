@@ -138,7 +138,10 @@ static int w_pair(lua_State *L)
     int b = pl_lua_material_index(L, 1, 3, fn);
     pl_lua_check_def(L, 4, fn);
     pl_lua_check_fields(L, 4, fn, pair_fields);
-    pl_pair_def d = pl_default_pair_def();
+    /* merge: the fields given replace those of the pair's existing override, the others are
+       kept (porelab.mimes sets friction, kn and ks of a pair in three separate calls) */
+    pl_pair_def d;
+    pl_lua_check_status(L, w, pl_world_pair_override(w, a, b, &d), fn);
     double *v[] = {&d.kn, &d.ks, &d.friction, &d.cohesion, &d.cn, &d.cs, &d.restitution, &d.rolling};
     for (int i = 0; pair_fields[i]; i++) {
         if (!pl_lua_has_field(L, 4, pair_fields[i])) continue;
@@ -150,6 +153,26 @@ static int w_pair(lua_State *L)
                      "in (0, 1]", d.restitution);
     pl_lua_check_status(L, w, pl_world_set_pair(w, a, b, &d), fn);
     return 0;
+}
+
+/* world:pair_params(a, b): the parameters contacts between the two materials use (combination
+   rules and overrides); restitution is absent when the pair uses the dashpots cn, cs. */
+static int w_pair_params(lua_State *L)
+{
+    const char *fn = "pair_params";
+    pl_world *w = pl_lua_check_world(L, 1)->w;
+    int a = pl_lua_material_index(L, 1, 2, fn);
+    int b = pl_lua_material_index(L, 1, 3, fn);
+    pl_pair_def d;
+    pl_lua_check_status(L, w, pl_world_pair_params(w, a, b, &d), fn);
+    const double v[] = {d.kn, d.ks, d.friction, d.cohesion, d.cn, d.cs, d.restitution, d.rolling};
+    lua_createtable(L, 0, 8);
+    for (int i = 0; pair_fields[i]; i++) {
+        if (v[i] < 0) continue;
+        lua_pushnumber(L, v[i]);
+        lua_setfield(L, -2, pair_fields[i]);
+    }
+    return 1;
 }
 
 static int w_find_material(lua_State *L)
@@ -172,6 +195,7 @@ static int w_material_count(lua_State *L)
 const luaL_Reg pl_lua_material_constructors[] = {
     {"material", w_material},
     {"pair", w_pair},
+    {"pair_params", w_pair_params},
     {"find_material", w_find_material},
     {"material_count", w_material_count},
     {NULL, NULL}};

@@ -171,6 +171,9 @@ pl_cli_test(bad_shake_ramp RC 1 ARGS run ${PL_BAD}/bad_shake_ramp.lua --quiet
 
 # Packing helpers: fill to a porosity and a count, size distributions, servo compression.
 pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --out ${PL_CLI_OUT}/packing)
+# MIMES listings: the pair parameters of Appendix C.2 survive its three apply_* commands.
+pl_cli_test(mimes_pairs RC 0 ARGS run tests/cli/lua/mimes_pairs.lua --quiet --out ${PL_CLI_OUT}/mimes_pairs
+  MATCH "mimes pairs: k_N 400000")
 # Scene parameters in the result table (the live window's sliders): accepted and checked.
 pl_cli_test(scene_params RC 0 ARGS run tests/cli/lua/params.lua --quiet --out ${PL_CLI_OUT}/params
   EXPECT_FILE ${PL_CLI_OUT}/params/frame_000001.png)

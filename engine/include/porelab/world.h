@@ -87,7 +87,16 @@ typedef struct pl_pair_def {
     double kn, ks, friction, cohesion, cn, cs, restitution, rolling;
 } pl_pair_def;
 pl_pair_def pl_default_pair_def(void); ///< all fields -1 (keep defaults)
+/// Replaces the whole override of the pair: fields < 0 in def go back to the combined default
+/// (to change one field and keep the others, read the override with pl_world_pair_override,
+/// change it and set it back; the Lua world:pair merges this way).
 pl_status pl_world_set_pair(pl_world *w, int material_a, int material_b, const pl_pair_def *def);
+/// The override stored for the pair (fields -1 where none was given).
+pl_status pl_world_pair_override(pl_world *w, int material_a, int material_b, pl_pair_def *out);
+/// The parameters contacts of the pair use, after the combination rules and the override:
+/// kn, ks, friction, cohesion, rolling, the dashpots cn, cs (used when restitution < 0) and
+/// restitution (-1 when the pair uses dashpots).
+pl_status pl_world_pair_params(pl_world *w, int material_a, int material_b, pl_pair_def *out);
 
 /* ----------------------------------------------------------------- bodies */
 

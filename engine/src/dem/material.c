@@ -134,6 +134,29 @@ pl_status pl_world_set_pair(pl_world *w, int a, int b, const pl_pair_def *def) {
     return PL_OK;
 }
 
+static pl_status check_pair_index(pl_world *w, const char *fn, int a, int b) {
+    if (a < 0 || a >= w->material_count || b < 0 || b >= w->material_count)
+        return pl__error(w, PL_ERR_ARG, "%s: material index out of range 0..%d (got %d, %d)", fn,
+                         w->material_count - 1, a, b);
+    return PL_OK;
+}
+
+pl_status pl_world_pair_override(pl_world *w, int a, int b, pl_pair_def *out) {
+    const pl_status st = check_pair_index(w, "pair_override", a, b);
+    if (st != PL_OK) return st;
+    *out = w->pair_overrides[a * w->material_count + b];
+    return PL_OK;
+}
+
+pl_status pl_world_pair_params(pl_world *w, int a, int b, pl_pair_def *out) {
+    const pl_status st = check_pair_index(w, "pair_params", a, b);
+    if (st != PL_OK) return st;
+    if (w->pair_params_dirty) pl__update_pair_params(w);
+    const pl_pair_params *p = pl__pair_params(w, a, b);
+    *out = (pl_pair_def){p->kn, p->ks, p->friction, p->cohesion, p->cn, p->cs, p->restitution, p->rolling};
+    return PL_OK;
+}
+
 void pl__update_pair_params(pl_world *w) {
     const int n = w->material_count;
     for (int i = 0; i < n; i++) {
