@@ -79,6 +79,7 @@ void pl__compute_dt(pl_world *w) {
                     r.limiting_body = i;
                     r.limit_kind = "translation";
                 }
+                if (w->inv_inertia[i] == 0 && w->law[i].fixed_rotation) continue; /* does not turn */
                 const double rr = w->radius[i];
                 /* a disc with rolling resistance has the rolling spring (k_S R^2, R <= r) beside
                    the shear spring's k_S r^2 */
