@@ -72,6 +72,19 @@ static int pair_combination(void) {
     bad.kn = 1e6;
     ENSURE(pl_world_add_material(w, &bad) == PL_ERR_ARG);
     ENSURE(strstr(pl_world_last_error(w), "density must be > 0") != NULL);
+    /* non-finite dashpots, cohesion and stiffnesses are refused by the engine too (issue 13) */
+    bad.density = 1000;
+    bad.cohesion = INFINITY;
+    ENSURE(pl_world_add_material(w, &bad) == PL_ERR_ARG);
+    bad.cohesion = 0;
+    bad.cn = INFINITY;
+    ENSURE(pl_world_add_material(w, &bad) == PL_ERR_ARG);
+    bad.cn = 0;
+    bad.ks = INFINITY;
+    ENSURE(pl_world_add_material(w, &bad) == PL_ERR_ARG);
+    o = pl_default_pair_def();
+    o.cohesion = INFINITY;
+    ENSURE(pl_world_set_pair(w, a, b, &o) == PL_ERR_ARG);
     pl_world_destroy(&w);
     return 0;
 }

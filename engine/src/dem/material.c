@@ -80,10 +80,13 @@ int pl_world_add_material(pl_world *w, const pl_material_def *def) {
         return pl__error(w, PL_ERR_ARG, "material '%s': friction must be >= 0 (got %g)", def->name, def->friction);
     if (!(def->rolling >= 0) || !isfinite(def->rolling))
         return pl__error(w, PL_ERR_ARG, "material '%s': rolling must be >= 0 (got %g)", def->name, def->rolling);
-    if (!(def->cohesion >= 0))
-        return pl__error(w, PL_ERR_ARG, "material '%s': cohesion must be >= 0 (got %g)", def->name, def->cohesion);
-    if (!(def->cn >= 0))
-        return pl__error(w, PL_ERR_ARG, "material '%s': cn must be >= 0 N s/m (got %g)", def->name, def->cn);
+    if (!(def->cohesion >= 0) || !isfinite(def->cohesion))
+        return pl__error(w, PL_ERR_ARG, "material '%s': cohesion must be finite and >= 0 (got %g)", def->name, def->cohesion);
+    if (!(def->cn >= 0) || !isfinite(def->cn))
+        return pl__error(w, PL_ERR_ARG, "material '%s': cn must be finite and >= 0 N s/m (got %g)", def->name, def->cn);
+    if (!isfinite(def->ks) || !isfinite(def->cs) || !isfinite(def->young))
+        return pl__error(w, PL_ERR_ARG, "material '%s': ks, cs and young must be finite (got %g, %g, %g)", def->name,
+                         def->ks, def->cs, def->young);
     if (def->restitution >= 0 && !(def->restitution > 0 && def->restitution <= 1))
         return pl__error(w, PL_ERR_ARG, "material '%s': restitution must be in (0, 1] (got %g)", def->name, def->restitution);
     if (w->material_count >= PL_MAX_MATERIALS)
@@ -147,6 +150,10 @@ pl_status pl_world_set_pair(pl_world *w, int a, int b, const pl_pair_def *def) {
                          w->material_count - 1, a, b);
     if (def->restitution >= 0 && !(def->restitution > 0 && def->restitution <= 1))
         return pl__error(w, PL_ERR_ARG, "set_pair: restitution must be in (0, 1] (got %g)", def->restitution);
+    const double f[] = {def->kn, def->ks, def->friction, def->cohesion, def->cn, def->cs, def->restitution, def->rolling};
+    for (int k = 0; k < 8; k++)
+        if (!isfinite(f[k]))
+            return pl__error(w, PL_ERR_ARG, "set_pair: every field must be finite (< 0 keeps the default; got %g)", f[k]);
     w->pair_overrides[override_index(a, b)] = *def;
     w->pair_params_dirty = 1;
     w->need_rebuild = 1;
