@@ -63,6 +63,8 @@ static int f_bc(lua_State *L)
     pl_lua_check_def(L, 2, fn);
     pl_lua_check_fields(L, 2, fn, fields);
     pl_vec2 a = vec_field(L, 2, fn, "from"), b = vec_field(L, 2, fn, "to");
+    if (a.x == b.x && a.y == b.y)
+        pl_lua_error(L, "%s: from and to must differ (a boundary line needs a length > 0)", fn);
     if (!pl_lua_has_field(L, 2, "head")) pl_lua_error(L, "%s: head is required (pressure head, m)", fn);
     int l = pl_world_add_fluid_bc(lw->w, a, b, pl_lua_field_number(L, 2, fn, "head", 0));
     pl_lua_check_status(L, lw->w, l, fn);

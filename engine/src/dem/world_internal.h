@@ -74,6 +74,8 @@ typedef struct pl_motion {
     pl_vec2 servo_dir; double servo_target; double servo_gain; double servo_vmax;
     pl_vec2 servo_drive; int servo_fluid;   /* servo extras (servo_drive.c): drive velocity, fluid force counted */
     pl_vec2 pivot, rel0; double angle0; int follow; double follow_x0, height; /* hinge */
+    int fixed_rotation;                  /* any body: the angle is held (guided piston; body.c) */
+    pl_vec2 guide;                       /* dynamic body: unit direction it may move along, or {0, 0} */
 } pl_motion;
 
 /* Acceleration (m/s^2) of a prescribed body's law at time t: the sinusoid's (with its ramp)
