@@ -323,7 +323,7 @@ static int f_write_geometry(lua_State *L)
 /* w:fluid_write_pvd(path, {files...}, {times...}) */
 static int f_write_pvd(lua_State *L)
 {
-    pl_lua_check_world(L, 1);
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
     char path[PATH_MAX];
     pl_lua_output_path(L, luaL_checkstring(L, 2), path, sizeof path, "fluid_write_pvd");
     luaL_checktype(L, 3, LUA_TTABLE);
@@ -342,10 +342,10 @@ static int f_write_pvd(lua_State *L)
         lua_pop(L, 1);
         if (!files[i]) { free(files); free(times); pl_lua_error(L, "fluid_write_pvd: files[%d] must be a string", i + 1); }
     }
-    pl_status st = pl_fluid_write_pvd(path, files, times, n);
+    pl_status st = pl_world_fluid_write_pvd(lw->w, path, files, times, n);
     free(files);
     free(times);
-    if (st != PL_OK) pl_lua_error(L, "fluid_write_pvd: cannot write '%s'", path);
+    if (st != PL_OK) pl_lua_error(L, "%s", pl_world_last_error(lw->w));
     return 0;
 }
 

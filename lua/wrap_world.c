@@ -1,5 +1,6 @@
 /* porelab.world{...}: the world userdata, its stepping, queries and flags. */
 #include "wrap.h"
+#include "file_writer.h"
 #include "lua_util.h"
 #include "scene_internal.h"
 
@@ -171,6 +172,11 @@ int pl_lua_world_new(lua_State *L)
     lw->flag_set = calloc((size_t)lw->flag_count + 1, 1);
     lw->w = pl_world_create(&def);
     if (!lw->w || !lw->flag_set) return pl_lua_error(L, "world: out of memory");
+    pl_lua_context *ctx = pl_lua_get_context(L);
+    if (ctx) { /* the engine's files (VTK, MIMES output) go inside the output folder */
+        const pl_file_writer fw = pl_lua_file_writer(ctx);
+        pl_world_set_file_writer(lw->w, &fw);
+    }
     int idx = lua_gettop(L);
     apply_def_flags(L, 1, idx);
     lua_settop(L, idx);

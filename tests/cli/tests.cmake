@@ -205,3 +205,8 @@ pl_cli_test(sandbox_chart_outside RC 1
 
 # Faults: kills, failed writes, hangs turned into range errors (tests/cli/faults/).
 include(${PL_CLI_DIR}/faults/tests.cmake)
+
+# The engine's own files go through the scene's writer into the output folder (issue 12).
+pl_cli_test(engine_files RC 0 ARGS run tests/cli/lua/engine_files.lua --quiet --out ${PL_CLI_OUT}/engine_files
+  EXPECT_FILE ${PL_CLI_OUT}/engine_files/pressures.flu FILE_MATCH "^% porelab fluid pressures"
+  NO_FILE ${CMAKE_SOURCE_DIR}/geometry.flu)

@@ -8,6 +8,7 @@
  *   no moment about the centroid; partly immersed ones feel rho_f g A_wet through the centroid
  *   of the wetted part (exact, §3.11.4 and Fig. 3-11). */
 #include "harness.h"
+#include "stdio_writer.h"
 #include "porelab/fluid.h"
 #include "porelab/world.h"
 #include <stdlib.h>
@@ -397,6 +398,12 @@ static int test_output_files(void) {
     ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
     pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
+    /* the engine opens no files: without a writer from the host, output is refused */
+    ENSURE(pl_world_fluid_write_vtu(w, "fluid_test.vtu") == PL_ERR_IO);
+    ENSURE(strstr(pl_world_last_error(w), "no file writer") != NULL);
+    FILE *none = fopen("fluid_test.vtu", "r");
+    ENSURE(none == NULL);
+    pl_world_set_file_writer(w, &pl_test_stdio_writer);
     ENSURE(pl_world_fluid_write_vtu(w, "fluid_test.vtu") == PL_OK);
     FILE *f = fopen("fluid_test.vtu", "r");
     ENSURE(f);
@@ -419,7 +426,7 @@ static int test_output_files(void) {
     ENSURE(rows == nn);
     const char *files[1] = {"fluid_test.vtu"};
     double times[1] = {0};
-    ENSURE(pl_fluid_write_pvd("fluid_test.pvd", files, times, 1) == PL_OK);
+    ENSURE(pl_world_fluid_write_pvd(w, "fluid_test.pvd", files, times, 1) == PL_OK);
     remove("fluid_test.vtu");
     remove("fluid_test.flu");
     remove("fluid_test.flu.tri");

@@ -34,6 +34,19 @@ typedef enum pl_status {
 /// Short name of a status ("ok", "bad argument", ...).
 const char *pl_status_name(pl_status s);
 
+/// Where the engine's file output goes. The engine opens no files itself: every file it makes
+/// (VTK of bodies, contacts and the fluid, the MIMES geometry and pressure files) is formatted
+/// in memory and handed whole to the host's writer, which decides where it may go (the Lua
+/// sandbox keeps it inside the output folder) and how it is written (whole files: temporary
+/// name, then rename). Without a writer, file output is refused with a message.
+typedef struct pl_file_writer {
+    /// Writes len bytes to path: append = 0 replaces the file, 1 appends to it. Returns 0, or -1
+    /// with a message in msg (msglen bytes).
+    int (*write)(void *ctx, const char *path, int append, const void *data, size_t len, char *msg,
+                 size_t msglen);
+    void *ctx;
+} pl_file_writer;
+
 /// FNV-1a 64-bit hash, used for state hashes (determinism tests).
 uint64_t pl_hash_bytes(uint64_t h, const void *data, size_t n);
 #define PL_HASH_SEED 1469598103934665603ull

@@ -135,7 +135,7 @@ pl_status pl_world_fluid_stats(const pl_world *w, pl_fluid_stats *out);
 /// ratio and permeability (elements) as a VTK unstructured grid (.vtu, ASCII).
 pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path);
 /// Writes a ParaView collection (.pvd) listing files[i] at times[i].
-pl_status pl_fluid_write_pvd(const char *path, const char *const *files, const double *times, int n);
+pl_status pl_world_fluid_write_pvd(pl_world *w, const char *path, const char *const *files, const double *times, int n);
 /// Thesis output files (FLUID_GEOMETRY_FILENAME / FLUID_PRESSURES_FILENAME): sets the path
 /// used when FLUID_GEOMETRY_FLAG / FLUID_PRESSURES_FLAG are on. which: "geometry" or "pressures".
 pl_status pl_world_fluid_set_output_file(pl_world *w, const char *which, const char *path);

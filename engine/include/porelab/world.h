@@ -255,6 +255,11 @@ pl_dt_report pl_world_dt_report(pl_world *w);
 /// Stepping prepares by itself. Preparing does not change the results of later steps.
 pl_status pl_world_prepare(pl_world *w);
 
+/// Sets the writer that receives every file the engine makes (VTK, MIMES geometry and pressure
+/// files); NULL removes it (file output is then refused with a message). The Lua binding sets
+/// one that keeps files inside the output folder.
+void pl_world_set_file_writer(pl_world *w, const pl_file_writer *writer);
+
 /// Models attached to the world (world/models.c registry), in attachment order: their count,
 /// short name ("darcy", "hydrostatic"), one-line description, and the CPU seconds they spent so
 /// far with the number of their updates (for `porelab info`).

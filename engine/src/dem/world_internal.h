@@ -174,6 +174,8 @@ struct pl_world {
     /* ---- world layer (engine/src/world only) ---- */
     /* flags (MIMES names), values indexed like the flag table (world/flags.c) */
     double *flag_values;
+    /* the host's file writer: every file the engine makes goes through it (porelab/core.h) */
+    pl_file_writer writer;
     /* attached models in attachment order (world/models.c) */
     struct pl_model_slot *models;
     int model_n, model_cap;

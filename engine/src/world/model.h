@@ -101,6 +101,8 @@ pl_status pl__world_error(const pl_world *w, pl_status s, const char *fmt, ...)
 #endif
     ;
 double pl__world_time(const pl_world *w);
+/* The host's file writer (porelab/core.h); the engine opens no files itself. */
+const pl_file_writer *pl__world_file_writer(const pl_world *w);
 pl_vec2 pl__world_gravity(const pl_world *w);
 /* The world's flag values of a class with MIMES flags, in the order of its flag-carrying
    parameter rows: the one storage of that class's def (a flag and the typed def cannot differ).

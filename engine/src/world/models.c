@@ -65,6 +65,12 @@ pl_status pl__world_error(const pl_world *w, pl_status s, const char *fmt, ...) 
 }
 
 double pl__world_time(const pl_world *w) { return w->time; }
+const pl_file_writer *pl__world_file_writer(const pl_world *w) { return &w->writer; }
+
+void pl_world_set_file_writer(pl_world *w, const pl_file_writer *fw) {
+    if (fw) w->writer = *fw;
+    else w->writer = (pl_file_writer){NULL, NULL};
+}
 pl_vec2 pl__world_gravity(const pl_world *w) { return w->def.gravity; }
 
 int pl__world_body_acceleration(const pl_world *w, int body, double t, pl_vec2 *acc) {

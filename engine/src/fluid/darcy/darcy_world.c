@@ -189,10 +189,8 @@ static pl_status write_outputs(pl_world *w) {
     }
     if (f->par.pressures_flag) {
         if (!f->pressures_started) {
-            FILE *fp = fopen(f->pressures_file, "w");
-            if (!fp) return pl__world_error(w, PL_ERR_IO, "fluid: cannot write %s", f->pressures_file);
-            fprintf(fp, "%% porelab fluid pressures: each row is t (s) then the pressure head (m) of every node\n");
-            fclose(fp);
+            pl_status st = pl_world_fluid_append_pressures_header(w, f->pressures_file);
+            if (st != PL_OK) return st;
             f->pressures_started = 1;
         }
         return pl_world_fluid_append_pressures(w, f->pressures_file);

@@ -11,6 +11,8 @@ pl_fl_bodies pl__fluid_world_bodies(const pl_world *w);
 /* One fluid update: porosity, permeability, assembly, solve (static when is_static). */
 pl_status pl__fluid_update(pl_world *w, double dt, int is_static);
 void pl__fluid_free_state(struct pl_fluid *f);
+/* Starts the pressures file with its header line (host writer). */
+pl_status pl_world_fluid_append_pressures_header(pl_world *w, const char *path);
 /* Meshes and builds the system when the quads or lines changed (fluid_snapshot.c uses it to
    bring a world's mesh and boundary conditions to those of a snapshot). */
 pl_status pl__fluid_ensure_built(pl_world *w);
