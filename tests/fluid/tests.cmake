@@ -37,3 +37,5 @@ if(NOT _pl_fluid_wired EQUAL -1 AND TARGET porelab)
            --steps 200 --every 100 --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/quicksand)
   set_tests_properties(fluid_scene_quicksand PROPERTIES LABELS fluid TIMEOUT 60)
 endif()
+# Hydrostatic water (porelab/hydrostatic.h): kernels without a world.
+pl_add_c_test(test_hydrostatic_kernels SOURCES ${PL_TEST_DIR}/fluid/test_hydrostatic_kernels.c LABEL fluid TIMEOUT 60)
