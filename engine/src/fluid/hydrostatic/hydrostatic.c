@@ -30,28 +30,28 @@ static double now(void) {
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static pl_status check_def(pl_world *w, const pl_hydrostatic_def *d, const char *fn) {
+static pl_status check_def(pl_world *w, const pl_hydrostatic_def *d) {
     char msg[320];
-    if (!d) return pl__world_error(w, PL_ERR_ARG, "%s: no def given (use pl_default_hydrostatic_def())", fn);
+    if (!d) return pl__world_error(w, PL_ERR_ARG, "water: no def given (use pl_default_hydrostatic_def())");
     if (pl_params_check_all(pl_hydrostatic_params, pl_hydrostatic_param_count, d, "water", msg, sizeof msg) != PL_OK)
-        return pl__world_error(w, PL_ERR_ARG, "%s: %s", fn, msg);
+        return pl__world_error(w, PL_ERR_ARG, "%s", msg);
     if (!(d->x_max > d->x_min))
-        return pl__world_error(w, PL_ERR_ARG, "%s: water: x_max (%g m) must be greater than x_min (%g m)", fn,
-                               d->x_max, d->x_min);
+        return pl__world_error(w, PL_ERR_ARG, "water: x_max (%g m) must be greater than x_min (%g m)", d->x_max,
+                               d->x_min);
     const pl_vec2 g = pl__world_gravity(w);
     if ((g.x != 0 || g.y != 0) && !(g.y < 0))
         return pl__world_error(w, PL_ERR_ARG,
-                               "%s: water: gravity (%g, %g) m/s^2 must point down into the tank (g.y < 0): the "
+                               "water: gravity (%g, %g) m/s^2 must point down into the tank (g.y < 0): the "
                                "tank {x_min <= x <= x_max, y >= bottom} is open upwards",
-                               fn, g.x, g.y);
+                               g.x, g.y);
     /* the level is a height along up; the water starts where the surface meets the bottom */
     const pl_hs_water wt = pl_hs_water_make(d, g);
     const double h_low = fmin(d->x_min * wt.up.x, d->x_max * wt.up.x) + d->bottom * wt.up.y;
     if (d->level < h_low)
         return pl__world_error(w, PL_ERR_ARG,
-                               "%s: water: level %g m is below the bottom (%g m): raise the level or lower the "
+                               "water: level %g m is below the bottom (%g m): raise the level or lower the "
                                "bottom",
-                               fn, d->level, h_low);
+                               d->level, h_low);
     return PL_OK;
 }
 
@@ -64,17 +64,15 @@ static void fix_water_area(pl_hydrostatic *m, const pl_world *w) {
 }
 
 pl_status pl_world_attach_hydrostatic(pl_world *w, const pl_hydrostatic_def *def) {
-    const char *fn = "attach_hydrostatic";
     if (!w) return PL_ERR_ARG;
     if (pl__world_model(w, &pl_hydrostatic_class))
         return pl__world_error(w, PL_ERR_STATE,
-                               "%s: this world already has hydrostatic water (one water body per world; change it "
-                               "with pl_world_hydrostatic_redefine / w:water_set{...})",
-                               fn);
-    pl_status st = check_def(w, def, fn);
+                               "water: this world already has hydrostatic water (one water body per world; "
+                               "change it with pl_world_hydrostatic_redefine / w:water_set{...})");
+    pl_status st = check_def(w, def);
     if (st != PL_OK) return st;
     pl_hydrostatic *m = calloc(1, sizeof *m);
-    if (!m) return pl__world_error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
+    if (!m) return pl__world_error(w, PL_ERR_NOMEM, "water: out of memory");
     m->def = *def;
     fix_water_area(m, w);
     st = pl__world_attach(w, &pl_hydrostatic_class, m);
@@ -92,10 +90,9 @@ pl_status pl_world_hydrostatic_def(const pl_world *w, pl_hydrostatic_def *out) {
 }
 
 pl_status pl_world_hydrostatic_redefine(pl_world *w, const pl_hydrostatic_def *def) {
-    const char *fn = "water_set";
     pl_hydrostatic *m = w ? pl__world_model(w, &pl_hydrostatic_class) : NULL;
-    if (!m) return w ? pl__world_error(w, PL_ERR_STATE, "%s: the world has no hydrostatic water", fn) : PL_ERR_ARG;
-    pl_status st = check_def(w, def, fn);
+    if (!m) return w ? pl__world_error(w, PL_ERR_STATE, "water_set: the world has no hydrostatic water (add it with w:water{...})") : PL_ERR_ARG;
+    pl_status st = check_def(w, def);
     if (st != PL_OK) return st;
     const pl_hydrostatic_def old = m->def;
     m->def = *def;
@@ -227,7 +224,7 @@ static pl_status hs_load(void *self, pl_world *w, pl_image *img) {
     d.density = v[4];
     d.drag = v[5];
     d.moving_level = ml;
-    if (!(v[6] >= 0) || check_def(w, &d, "load water") != PL_OK)
+    if (!(v[6] >= 0) || check_def(w, &d) != PL_OK)
         return pl__world_error(w, PL_ERR_IO, "load: the image's hydrostatic section is damaged (a field is out of its "
                                              "range)");
     m->def = d;

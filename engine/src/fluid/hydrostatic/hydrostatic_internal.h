@@ -52,6 +52,11 @@ void pl_hs_body_part(const pl_hs_water *wt, double level, const pl_grain_view *g
 void pl_hs_load(const pl_hs_water *wt, const pl_hs_part *p, pl_vec2 c, pl_vec2 v, double omega, pl_vec2 *force,
                 double *moment);
 
+/* The pressure field for drawing (pl_field_sample): the water body fanned into nt <= 3 triangles
+   from its first vertex, with the pressure at the nn <= 5 vertices. The pressure is linear in the
+   water body, so linear triangles show it exactly. Returns nn (0: no water). */
+int pl_hs_field(const pl_hs_water *wt, double level, pl_vec2 xy[8], int32_t tri[18], double value[8], int *nt);
+
 /* Total solid area inside the water body at a level, over every body of the view with area. */
 double pl_hs_solid_area(const pl_hs_water *wt, double level, const pl_grain_view *g);
 /* The level with A_T(level) - A_solid(level) = a_water, starting from `level0` (bracketed

@@ -196,6 +196,21 @@ void pl_hs_load(const pl_hs_water *wt, const pl_hs_part *p, pl_vec2 c, pl_vec2 v
     *moment = M;
 }
 
+int pl_hs_field(const pl_hs_water *wt, double level, pl_vec2 xy[8], int32_t tri[18], double value[8], int *nt) {
+    const int nn = pl_hs_water_polygon(wt, level, xy);
+    *nt = nn >= 3 ? nn - 2 : 0;
+    for (int k = 0; k < nn; k++) {
+        const double depth = level - dotp(xy[k], wt->up);
+        value[k] = depth > 0 ? wt->rho * wt->g * depth : 0;
+    }
+    for (int t = 0; t < *nt; t++) {
+        tri[3 * t] = 0;
+        tri[3 * t + 1] = t + 1;
+        tri[3 * t + 2] = t + 2;
+    }
+    return *nt ? nn : 0;
+}
+
 double pl_hs_solid_area(const pl_hs_water *wt, double level, const pl_grain_view *g) {
     double a = 0;
     for (int i = 0; i < g->n; i++) {
