@@ -25,7 +25,7 @@ static void read_def(lua_State *L, const char *fn, pl_hydrostatic_def *d)
     for (int k = 0; k < PL_HYDROSTATIC_PARAM_COUNT; k++) {
         const pl_param *p = &pl_hydrostatic_params[k];
         if (!pl_lua_has_field(L, 2, p->name)) continue;
-        double v;
+        double v = 0;
         if (p->type == PL_PARAM_BOOL) {
             /* true/false or 0/1 */
             lua_getfield(L, 2, p->name);

@@ -296,8 +296,10 @@ static void make_view(view_store *s, pl_vec2 block_c, double L, double H, pl_vec
     s->verts[4] = (pl_vec2){-1, 0};
     s->verts[5] = (pl_vec2){1, 0};
     for (int i = 0; i < 3; i++) s->wants[i] = i < 2;
-    s->g = (pl_grain_view){3, s->shape, s->motion, s->pos, s->vel, s->angle, s->omega, s->radius, s->area,
-                           s->off, s->cnt, s->verts, s->wants, 0, {0, -9.81}};
+    s->g = (pl_grain_view){.n = 3, .shape = s->shape, .motion = s->motion, .pos = s->pos, .vel = s->vel,
+                           .angle = s->angle, .omega = s->omega, .radius = s->radius, .area = s->area,
+                           .vert_offset = s->off, .vert_count = s->cnt, .verts = s->verts, .wants_load = s->wants,
+                           .time = 0, .gravity = {0, -9.81}};
 }
 
 static int test_moving_level_root(void) {

@@ -118,6 +118,13 @@ double pl_world_hydrostatic_pressure(const pl_world *w, pl_vec2 p) {
 
 /* ------------------------------------------------------------------ class functions */
 
+/* An empty instance (a snapshot restored into a world without water fills it). */
+static void *hs_create(void) {
+    pl_hydrostatic *m = calloc(1, sizeof *m);
+    if (m) m->def = pl_default_hydrostatic_def();
+    return m;
+}
+
 static pl_status hs_advance(void *self, pl_world *w, const pl_grain_view *g, double dt) {
     (void)dt;
     pl_hydrostatic *m = self;
@@ -246,6 +253,7 @@ const pl_model_class pl_hydrostatic_class = {
     .def_size = sizeof(pl_hydrostatic_def),
     .params = pl_hydrostatic_params,
     .nparams = PL_HYDROSTATIC_PARAM_COUNT,
+    .create = hs_create,
     .advance = hs_advance,
     .loads = hs_loads,
     .hash = hs_hash,
