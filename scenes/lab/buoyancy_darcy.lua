@@ -1,8 +1,9 @@
--- Classroom lab: what floats? (docs/classroom.md, lesson 1). A tank of still water with
+-- Classroom lab: what floats? -- the Darcy-model version of scenes/lab/buoyancy.lua (which uses
+-- the cheaper hydrostatic water; docs/hydrostatic.md compares them: the same drafts). A tank of still water with
 -- three blocks and a handful of pebbles. The water pressure rises with depth (hydrostatic,
 -- layer "pressure"); the pressure around each body's outline pushes it up with the weight of
 -- the water it displaces (Archimedes). A body floats when its density is below the water's.
--- Open it live:  porelab view scenes/lab/buoyancy.lua
+-- Open it live:  porelab view scenes/lab/buoyancy_darcy.lua
 -- Parameters (tab selects, up/down changes, while it runs): the density of each block and
 -- of the water.
 local W, H = 0.40, 0.30                -- tank width and water depth, m

@@ -37,14 +37,14 @@ local function overlay(world)
       color = { 0.12, 0.3, 0.62, 1 }, width = 1 },
     { line = { { -0.01, H }, { 0, H } }, color = "#d62728", width = 2 },
     { text = string.format("level %+.2f mm (at rest: %+.2f mm)", 1000 * (level - H), 1000 * expect),
-      at = { 20, 30 }, space = "pixel", size = 15 },
+      at = { 12, 56 }, space = "pixel", size = 15 },
   }
 end
 
 return {
   world = w,
   params = params,
-  run = { t_end = 3.0, fps = 30 },
+  run = { t_end = 4.0, fps = 30 },
   render = { size = { 600, 700 }, camera = { -0.03, -0.02, W + 0.03, 0.30 },
              layers = "bodies,overlay,title,time", overlay = overlay,
              title = "The water rises: a block in a narrow tank" },
