@@ -14,11 +14,14 @@
  *   its submerged area / width (1e-9), and that area is rho_b A / rho_f (1e-3);
  * - a pebble (rho 2650, r = 0.012) resting on the floor under water presses on it with its
  *   buoyant weight (rho_b - rho_f) g pi r^2 (1e-3);
- * - argument checks; snapshot and restore give the same state hash. */
+ * - argument checks; snapshot and restore give the same state hash; the model's state image
+ *   (save, load into a new instance) gives the same model hash, a truncated or damaged image is
+ *   refused with a message. */
 #include "harness.h"
 #include "porelab/fluid.h"
 #include "porelab/hydrostatic.h"
 #include "porelab/world.h"
+#include "world/image_internal.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -272,7 +275,43 @@ static int test_checks_and_snapshot(void) {
     return 0;
 }
 
+static int test_image_round_trip(void) {
+    pl_world *w = tank(HYDRO, 0.1, 1);
+    add_block(w, "wood", 600, (pl_vec2){0.05, WATER_H + 0.03}, 0.06, 0.05);
+    ENSURE(run(w, 0.2) == 0);
+    const pl_model_class *cls = &pl_hydrostatic_class;
+    void *self = pl__world_model(w, cls);
+    ENSURE(self != NULL);
+    pl_image img = {0};
+    ENSURE(cls->save(self, &img) == PL_OK);
+    void *copy = cls->create();
+    ENSURE(copy != NULL);
+    ENSURE(cls->load(copy, w, &img) == PL_OK);
+    ENSURE(cls->hash(copy, 1) == cls->hash(self, 1));
+    fprintf(stderr, "  image: %zu bytes, loaded copy has the same hash\n", img.len);
+    /* truncated */
+    img.pos = 0;
+    img.len -= 2;
+    ENSURE(cls->load(copy, w, &img) == PL_ERR_IO);
+    /* damaged: the density (5th double) made negative */
+    img.len += 2;
+    img.pos = 0;
+    img.failed = 0;
+    double rho;
+    memcpy(&rho, img.data + 4 * sizeof(double), sizeof rho);
+    rho = -rho;
+    memcpy(img.data + 4 * sizeof(double), &rho, sizeof rho);
+    ENSURE(cls->load(copy, w, &img) == PL_ERR_IO);
+    fprintf(stderr, "  damaged image: %s\n", pl_world_last_error(w));
+    ENSURE(strstr(pl_world_last_error(w), "damaged"));
+    cls->destroy(copy);
+    pl__image_free(&img);
+    pl_world_destroy(&w);
+    return 0;
+}
+
 int main(void) {
+    RUN(test_image_round_trip);
     RUN(test_checks_and_snapshot);
     RUN(test_floating_block_hydrostatic);
     RUN(test_floating_block_darcy);
