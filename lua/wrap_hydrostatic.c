@@ -8,38 +8,17 @@
  * the world metatable with luaL_setfuncs(L, pl_lua_hydrostatic_methods, 0). */
 #include "wrap.h"
 #include "lua_util.h"
+#include "lua_params.h"
 #include "porelab/hydrostatic.h"
 #include "porelab/params.h"
 
-#include <math.h>
-#include <string.h>
 
-/* Reads the fields of the table at index 2 into d (missing fields keep d's values). */
+/* Reads the fields of the table at index 2 into d (missing fields keep d's values) through the
+   shared parameter-table reader (lua_params.c). */
 static void read_def(lua_State *L, const char *fn, pl_hydrostatic_def *d)
 {
-    const char *names[PL_HYDROSTATIC_PARAM_COUNT + 1];
-    for (int k = 0; k < PL_HYDROSTATIC_PARAM_COUNT; k++) names[k] = pl_hydrostatic_params[k].name;
-    names[PL_HYDROSTATIC_PARAM_COUNT] = NULL;
     pl_lua_check_def(L, 2, fn);
-    pl_lua_check_fields(L, 2, fn, names);
-    for (int k = 0; k < PL_HYDROSTATIC_PARAM_COUNT; k++) {
-        const pl_param *p = &pl_hydrostatic_params[k];
-        if (!pl_lua_has_field(L, 2, p->name)) continue;
-        double v = 0;
-        if (p->type == PL_PARAM_BOOL) {
-            /* true/false or 0/1 */
-            lua_getfield(L, 2, p->name);
-            if (lua_isboolean(L, -1)) v = lua_toboolean(L, -1);
-            else if (lua_type(L, -1) == LUA_TNUMBER) v = lua_tonumber(L, -1);
-            else pl_lua_error(L, "%s: %s must be true, false, 0 or 1 (got %s)", fn, p->name, luaL_typename(L, -1));
-            lua_pop(L, 1);
-        } else {
-            v = pl_lua_field_number(L, 2, fn, p->name, 0);
-        }
-        char msg[256];
-        if (pl_param_check(p, v, msg, sizeof msg) != PL_OK) pl_lua_error(L, "%s: %s (%s)", fn, msg, p->doc);
-        pl_param_write(p, d, v);
-    }
+    pl_lua_read_params(L, 2, fn, pl_hydrostatic_params, PL_HYDROSTATIC_PARAM_COUNT, d);
 }
 
 static int h_water(lua_State *L)

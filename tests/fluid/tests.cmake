@@ -28,6 +28,9 @@ if(NOT _pl_fluid_wired EQUAL -1 AND TARGET porelab)
   add_test(NAME fluid_lua_api COMMAND porelab run ${PL_TEST_DIR}/fluid/lua_fluid_api.lua -q
            --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/lua_api)
   set_tests_properties(fluid_lua_api PROPERTIES LABELS fluid TIMEOUT 60)
+  add_test(NAME fluid_lua_darcy_def COMMAND porelab run ${PL_TEST_DIR}/fluid/lua_darcy_def.lua -q
+           --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/lua_darcy_def)
+  set_tests_properties(fluid_lua_darcy_def PROPERTIES LABELS fluid TIMEOUT 60)
   foreach(scene dam_flow buoyancy prop)
     add_test(NAME fluid_scene_${scene} COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/mimes/${scene}.lua -q
              --steps 40 --every 20 --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/${scene})
