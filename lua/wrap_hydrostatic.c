@@ -3,6 +3,7 @@
  *     w:water_set{ density = ... }     (change fields between steps; the others keep their values)
  *     w:water_level()                  -> current free-surface level, m
  *     w:water_pressure(x, y)           -> water pressure at a point, Pa
+ *     w:water_def()                    -> the fields as a table (level: the current level)
  * The fields are read through the model's parameter table (pl_hydrostatic_params): the valid
  * names, the ranges and the units come from it, so Lua and C cannot disagree. Registered into
  * the world metatable with luaL_setfuncs(L, pl_lua_hydrostatic_methods, 0). */
@@ -51,6 +52,17 @@ static int h_water_level(lua_State *L)
     return 1;
 }
 
+/* w:water_def() -> {x_min = , ..., level = current level, ...} */
+static int h_water_def(lua_State *L)
+{
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    pl_hydrostatic_def d;
+    if (pl_world_hydrostatic_def(lw->w, &d) != PL_OK)
+        pl_lua_error(L, "water_def: the world has no water (add it with w:water{...})");
+    pl_lua_push_params(L, pl_hydrostatic_params, PL_HYDROSTATIC_PARAM_COUNT, &d);
+    return 1;
+}
+
 static int h_water_pressure(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
@@ -69,4 +81,5 @@ const luaL_Reg pl_lua_hydrostatic_methods[] = {{"water", h_water},
                                                {"water_set", h_water_set},
                                                {"water_level", h_water_level},
                                                {"water_pressure", h_water_pressure},
+                                               {"water_def", h_water_def},
                                                {NULL, NULL}};

@@ -51,4 +51,7 @@ x, y = b:position()
 draft = w:water_level() - (y - 0.02)
 check(math.abs(draft - 0.01) < 1e-5, "draft in denser water %.6f (0.01)", draft)
 fails("water_set: .*drag must be", w.water_set, w, { drag = -1 })
+local d = w:water_def()
+check(d.density == 2000 and d.moving_level == 1 and d.x_max == 0.2 and d.level == w:water_level(),
+      "water_def: density %s, moving_level %s, level %s", tostring(d.density), tostring(d.moving_level), tostring(d.level))
 print(string.format("lua hydrostatic: ok (draft %.6f m, level %.6f m)", draft, w:water_level()))
