@@ -14,6 +14,8 @@
  *   its submerged area / width (1e-9), and that area is rho_b A / rho_f (1e-3);
  * - a pebble (rho 2650, r = 0.012) resting on the floor under water presses on it with its
  *   buoyant weight (rho_b - rho_f) g pi r^2 (1e-3);
+ * - linear drag: a pebble sinking through water with drag beta (no other damping) reaches the
+ *   terminal velocity (rho_b - rho_f) g / beta, whatever its size (1e-5);
  * - argument checks; snapshot and restore give the same state hash; the model's state image
  *   (save, load into a new instance) gives the same model hash, a truncated or damaged image is
  *   refused with a message. */
@@ -222,6 +224,44 @@ static int test_sunk_pebble_contact_force(void) {
     return 0;
 }
 
+static int test_drag_terminal_velocity(void) {
+    pl_world_def wd = pl_default_world_def();
+    wd.dt = DT;
+    pl_world *w = pl_world_create(&wd);
+    pl_hydrostatic_def h = pl_default_hydrostatic_def();
+    h.x_max = 1;
+    h.level = 1;
+    h.drag = 2e5;
+    ENSURE(pl_world_attach_hydrostatic(w, &h) == PL_OK);
+    pl_material_def md = pl_default_material_def();
+    md.name = "pebble";
+    md.density = 2650;
+    md.kn = 2e5;
+    const int m = pl_world_add_material(w, &md);
+    const double radii[2] = {0.012, 0.03};
+    int b[2];
+    for (int k = 0; k < 2; k++) {
+        pl_body_def bd = pl_default_body_def();
+        bd.shape = PL_SHAPE_DISC;
+        bd.material = m;
+        bd.radius = radii[k];
+        bd.position = (pl_vec2){0.25 + 0.5 * k, 0.8};
+        b[k] = pl_world_add_body(w, &bd);
+    }
+    ENSURE(run(w, 0.2) == 0); /* 15 time constants rho_b / beta = 0.013 s */
+    const double vt = -(2650 - 1000) * 9.81 / 2e5;
+    for (int k = 0; k < 2; k++) {
+        pl_body_info bi;
+        pl_world_body_info(w, b[k], &bi);
+        fprintf(stderr, "  drag 2e5 N s/m^3, r = %.3f m: sinking at %.7f m/s (terminal (rho_b - rho_f) g / beta = %.7f)\n",
+                radii[k], bi.velocity.y, vt);
+        ENSURE_REL(bi.velocity.y, vt, 1e-5);
+        ENSURE(fabs(bi.velocity.x) < 1e-12 && fabs(bi.omega) < 1e-12);
+    }
+    pl_world_destroy(&w);
+    return 0;
+}
+
 static int test_checks_and_snapshot(void) {
     pl_world_def wd = pl_default_world_def();
     pl_world *w = pl_world_create(&wd);
@@ -317,5 +357,6 @@ int main(void) {
     RUN(test_floating_block_darcy);
     RUN(test_moving_level);
     RUN(test_sunk_pebble_contact_force);
+    RUN(test_drag_terminal_velocity);
     return pl_test_report();
 }
