@@ -370,7 +370,38 @@ static int test_drag(void) {
     return 0;
 }
 
+/* the drawing field: at most 3 triangles covering the water body, pressures exact at the nodes */
+static int test_field(void) {
+    const double ga = 15 * PI / 180;
+    pl_hydrostatic_def d = pl_default_hydrostatic_def();
+    d.x_min = 0;
+    d.x_max = 0.4;
+    d.level = 0.3;
+    pl_hs_water wt = pl_hs_water_make(&d, (pl_vec2){9.81 * sin(ga), -9.81 * cos(ga)});
+    pl_vec2 xy[8];
+    int32_t tri[18];
+    double val[8];
+    int nt = 0;
+    const int nn = pl_hs_field(&wt, d.level, xy, tri, val, &nt);
+    ENSURE(nn >= 3 && nt == nn - 2);
+    double area = 0;
+    for (int t = 0; t < nt; t++) {
+        const pl_vec2 a = xy[tri[3 * t]], b = xy[tri[3 * t + 1]], c = xy[tri[3 * t + 2]];
+        const double at = 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+        ENSURE(at > 0);
+        area += at;
+    }
+    ENSURE_REL(area, pl_hs_tank_area(&wt, d.level), 1e-14);
+    for (int k = 0; k < nn; k++) {
+        const double depth = d.level - (xy[k].x * wt.up.x + xy[k].y * wt.up.y);
+        ENSURE_NEAR(val[k], 1000 * 9.81 * fmax(depth, 0), 1e-9);
+    }
+    fprintf(stderr, "  field: %d nodes, %d triangles, area %.6f m^2 (gravity at 15 degrees)\n", nn, nt, area);
+    return 0;
+}
+
 int main(void) {
+    RUN(test_field);
     RUN(test_disc_segment_quadrature);
     RUN(test_disc_segment_closed_forms);
     RUN(test_polygon_parts);

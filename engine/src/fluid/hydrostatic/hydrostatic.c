@@ -14,6 +14,10 @@ typedef struct pl_hydrostatic {
     pl_hydrostatic_def def;
     double a_water;  /* m^2, the water's area (moving level) */
     int last_evals;  /* area evaluations of the last level solve */
+    /* the drawing field (pl__hydrostatic_field): not state */
+    pl_vec2 fxy[8];
+    int32_t ftri[18];
+    double fval[8];
     double seconds;  /* in advance + loads */
     long calls;
 } pl_hydrostatic;
@@ -114,6 +118,15 @@ double pl_world_hydrostatic_pressure(const pl_world *w, pl_vec2 p) {
     if (p.x < wt.x_min || p.x > wt.x_max || p.y < wt.bottom) return 0;
     const double depth = m->def.level - (p.x * wt.up.x + p.y * wt.up.y);
     return depth > 0 ? wt.rho * wt.g * depth : 0;
+}
+
+int pl__hydrostatic_field(void *self, pl_vec2 gravity, pl_field_sample *out) {
+    pl_hydrostatic *m = self;
+    const pl_hs_water wt = pl_hs_water_make(&m->def, gravity);
+    int nt = 0;
+    const int nn = pl_hs_field(&wt, m->def.level, m->fxy, m->ftri, m->fval, &nt);
+    *out = (pl_field_sample){nn, nt, m->fxy, m->ftri, m->fval};
+    return nn;
 }
 
 /* ------------------------------------------------------------------ class functions */

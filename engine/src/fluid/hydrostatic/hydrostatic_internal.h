@@ -64,4 +64,9 @@ double pl_hs_solid_area(const pl_hs_water *wt, double level, const pl_grain_view
    NULL) receives the number of area evaluations. */
 double pl_hs_solve_level(const pl_hs_water *wt, const pl_grain_view *g, double a_water, double level0, int *evals);
 
+/* The model's pressure field for drawing (for a `field` function of pl_model_class once the
+   interface has one): fills out with the water body's triangles and pressures, stored in the
+   model instance `self` (valid until the next call or step). Returns the node count. */
+int pl__hydrostatic_field(void *self, pl_vec2 gravity, pl_field_sample *out);
+
 #endif
