@@ -88,6 +88,10 @@ static int frame(run_ctx *c)
         print_stop(c, "the scene's render.overlay raised an error (above)");
         return -1;
     }
+    if (pl_render_prepare(c->w, c->ropt, c->vtk != NULL) != PL_OK) {
+        print_stop(c, pl_world_last_error(c->w));
+        return -1;
+    }
     if ((c->gfw ? pl_gl_frames_add(c->gfw, c->w, c->ropt, err, sizeof err)
                 : pl_frame_writer_add(c->fw, c->w, c->ropt, err, sizeof err)) != 0) {
         print_stop(c, err);
@@ -101,6 +105,11 @@ static int frame(run_ctx *c)
     if (pl_scene_call_hook(c->s, "on_frame", index) != 0) {
         pl_cli_print_scene_error(c->o, c->s);
         print_stop(c, "the scene's on_frame hook raised an error (above)");
+        return -1;
+    }
+    /* the CSV rows so far reach the disk as whole lines once per frame */
+    if (pl_report_flush_csv(stderr, c->s) != 0) {
+        print_stop(c, "a CSV file could not be written (above)");
         return -1;
     }
     return 0;
@@ -179,9 +188,10 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     pl_world *w = pl_scene_world(s);
     pl_render_options ropt;
     if (pl_cli_render_options(o, s, w, &ropt) != 0) return PL_EXIT_FAIL;
-    pl_run_plan plan;
-    int rc = pl_run_plan_make(o, s, w, &plan);
+    int rc = pl_run_plan_check_view(s, &ropt);
     if (rc) return rc;
+    pl_run_plan plan;
+    if ((rc = pl_run_plan_make(o, s, w, &plan)) != 0) return rc;
     pl_draw_list overlay;
     pl_draw_list_init(&overlay);
     run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL, NULL,
@@ -208,6 +218,14 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     pl_progress prog;
     pl_progress_start(&prog, plan.total_steps, quiet);
     rc = step_loop(&c, &prog) == 0 ? PL_EXIT_OK : PL_EXIT_FAIL;
+    /* every CSV written and closed (whether the scene closed it or not) before "finished" */
+    if (pl_report_close_csv(stderr, s) != 0) {
+        if (rc == PL_EXIT_OK)
+            fprintf(stderr, "porelab: the run reached t = %.6g s, but its output is incomplete "
+                            "(above); %d frame%s in %s/\n", pl_world_time(w), frame_count(&c),
+                    frame_count(&c) == 1 ? "" : "s", out_dir);
+        rc = PL_EXIT_FAIL;
+    }
     double wall = pl_wall_seconds() - prog.wall_start;
     int frames = frame_count(&c);
     if (rc == PL_EXIT_OK && !quiet) print_summary(&c, wall);
@@ -235,6 +253,11 @@ static int run_imperative(const pl_opts *o, pl_scene *s)
             fprintf(stderr, "porelab run: note: %s is an imperative script (it returns no "
                             "world), so %s does not apply\n", pl_scene_path(s), ignored[i]);
     pl_world *w = pl_scene_world(s);
+    if (pl_report_close_csv(stderr, s) != 0) {
+        fprintf(stderr, "porelab: %s ran, but its output is incomplete (above)\n",
+                pl_scene_path(s));
+        return PL_EXIT_FAIL;
+    }
     if (!pl_opts_has(o, "--quiet")) {
         printf("porelab: %s ran to completion (imperative script)\n", pl_scene_path(s));
         if (w) {
@@ -255,6 +278,7 @@ int pl_cmd_run(int argc, char **argv)
     int rc = pl_opts_parse(&o, &run_help, argc, argv, 1);
     if (rc >= 0) return rc;
     if (pl_cli_require_scene(&o) != 0) return PL_EXIT_USAGE;
+    pl_report_ignore_file_size_signal();
     if (pl_gl_cli_parse_renderer(pl_opts_get(&o, "--renderer"), "run") < 0) return PL_EXIT_USAGE;
     if (pl_opts_has(&o, "--window")) return pl_window_main(&o);
     char out_dir[PATH_MAX];
@@ -267,6 +291,7 @@ int pl_cmd_run(int argc, char **argv)
     pl_scene *s = pl_cli_load_scene(&o, out_dir);
     if (!s) return PL_EXIT_FAIL;
     rc = pl_scene_declarative(s) ? run_declarative(&o, s, out_dir) : run_imperative(&o, s);
+    if (pl_report_close_csv(stderr, s) != 0 && rc == PL_EXIT_OK) rc = PL_EXIT_FAIL;
     pl_scene_destroy(&s);
     return rc;
 }

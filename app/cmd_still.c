@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "render/drawlist.h"
 #include "gl_cli.h"
+#include "report.h"
 #include "run_plan.h"
 
 #include <limits.h>
@@ -47,7 +48,13 @@ static pl_status step_like_run(const pl_opts *o, pl_scene *s, pl_world *w, const
                                double at)
 {
     const long long start = (long long)pl_world_step_count(w);
-    const long long target = at > p->t_start ? (long long)ceil((at - p->t_start) / p->dt - 1e-9) : 0;
+    const long long target = pl_run_plan_steps_to(p, at);
+    if (target > PL_MAX_STEPS) {
+        fprintf(stderr, "porelab still: --at %g s is %.3g steps of dt = %g s after the start; "
+                        "the valid range is up to %.0e steps\n",
+                at, (at - p->t_start) / p->dt, p->dt, (double)PL_MAX_STEPS);
+        return PL_ERR_ARG;
+    }
     long long k = 0, next = 0, index = 0;
     for (;;) {
         long long done = (long long)pl_world_step_count(w) - start;
@@ -80,6 +87,7 @@ int pl_cmd_still(int argc, char **argv)
     int rc = pl_opts_parse(&o, &still_help, argc, argv, 1);
     if (rc >= 0) return rc;
     if (pl_cli_require_scene(&o) != 0) return PL_EXIT_USAGE;
+    pl_report_ignore_file_size_signal();
     const char *file = pl_opts_get(&o, "--output");
     if (!file || !has_extension(file)) {
         fprintf(stderr, "porelab still: -o FILE is required and must end in .png, .svg or .pdf "
@@ -104,7 +112,8 @@ int pl_cmd_still(int argc, char **argv)
     if (!w) {
         fprintf(stderr, "porelab: %s creates no world, so there is nothing to draw\n",
                 pl_scene_path(s));
-    } else if (pl_cli_render_options(&o, s, w, &ropt) == 0) {
+    } else if (pl_cli_render_options(&o, s, w, &ropt) == 0 &&
+               pl_run_plan_check_view(s, &ropt) == 0) {
         double t = pl_world_time(w);
         if (at < 0) at = t;
         pl_status st = PL_OK;
@@ -123,7 +132,9 @@ int pl_cmd_still(int argc, char **argv)
         char err[1024];
         pl_draw_list overlay;
         pl_draw_list_init(&overlay);
-        if (rc != PL_EXIT_USAGE && st == PL_OK && pl_cli_overlay(&o, s, &overlay, &ropt) == 0) {
+        if (rc != PL_EXIT_USAGE && st == PL_OK && pl_render_prepare(w, &ropt, 0) != PL_OK) {
+            fprintf(stderr, "porelab: %s\n", pl_world_last_error(w));
+        } else if (rc != PL_EXIT_USAGE && st == PL_OK && pl_cli_overlay(&o, s, &overlay, &ropt) == 0) {
             if ((use_gl ? pl_gl_cli_still(w, &ropt, file, err, sizeof err)
                         : pl_render_to_file(w, &ropt, file, err, sizeof err)) != 0) {
                 fprintf(stderr, "porelab: cannot write %s: %s\n", file, err);
@@ -135,6 +146,7 @@ int pl_cmd_still(int argc, char **argv)
         }
         pl_draw_list_free(&overlay);
     }
+    if (pl_report_close_csv(stderr, s) != 0) rc = PL_EXIT_FAIL;
     pl_scene_destroy(&s);
     return rc;
 }

@@ -1,6 +1,8 @@
 #include "report.h"
+#include "wrap_csv.h"
 
 #include <math.h>
+#include <signal.h>
 
 #define LABEL "  %-15s"
 
@@ -136,4 +138,27 @@ void pl_report_energy(FILE *f, const pl_world *w)
                 e.balance, 100 * fabs(e.balance) / moved);
     else
         fprintf(f, LABEL "%.3g J\n", "balance error", e.balance);
+}
+
+static int csv_result(FILE *f, int rc, const char *err)
+{
+    if (rc != 0) fprintf(f, "porelab: %s\n", err);
+    return rc;
+}
+
+int pl_report_flush_csv(FILE *f, pl_scene *s)
+{
+    char err[5000];
+    return csv_result(f, pl_lua_csv_flush_all(pl_scene_lua(s), err, sizeof err), err);
+}
+
+int pl_report_close_csv(FILE *f, pl_scene *s)
+{
+    char err[5000];
+    return csv_result(f, pl_lua_csv_close_all(pl_scene_lua(s), err, sizeof err), err);
+}
+
+void pl_report_ignore_file_size_signal(void)
+{
+    signal(SIGXFSZ, SIG_IGN);
 }

@@ -16,4 +16,15 @@ void pl_report_fluid(FILE *f, const pl_world *w);
 void pl_report_flags(FILE *f, pl_scene *s);
 void pl_report_energy(FILE *f, const pl_world *w);
 
+/* The scene's CSV files (porelab.csv): pl_report_flush_csv writes their whole lines (after
+ * each frame, when a run stops); pl_report_close_csv flushes and closes them all, also those
+ * the scene never closed (before the scene is destroyed). A failed write is printed to f as
+ * "porelab: writing the CSV file '...' failed: <reason> ..."; both return 0 or -1. */
+int pl_report_flush_csv(FILE *f, pl_scene *s);
+int pl_report_close_csv(FILE *f, pl_scene *s);
+
+/* Makes a write past the file size limit (ulimit -f) fail with EFBIG, reported like a full
+ * disk, instead of killing porelab with SIGXFSZ. */
+void pl_report_ignore_file_size_signal(void);
+
 #endif

@@ -1,17 +1,44 @@
 #include "run_plan.h"
 
+#include "render/render.h"
+
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
+/* Steps to cover `duration`; PL_STEPS_NEVER when that is beyond what a long long holds
+ * (huge durations, tiny steps), so later comparisons stay exact and loops end. */
 static long long steps_for(double duration, double dt)
 {
     /* The small tolerance keeps t = n dt from needing one extra step by round-off. */
-    return (long long)ceil(duration / dt - 1e-9);
+    double n = ceil(duration / dt - 1e-9);
+    if (!(n < 9.0e18)) return PL_STEPS_NEVER; /* also NaN */
+    return n > 0 ? (long long)n : 0;
+}
+
+/* The run's length in steps must be in 0..PL_MAX_STEPS (beyond it the step and frame
+ * arithmetic loses exactness, and no run would end). Prints the error. */
+static int check_length(const pl_scene *s, const pl_run_plan *p, double duration)
+{
+    if (p->total_steps >= 0 && p->total_steps <= PL_MAX_STEPS) return 0;
+    const int usage = strncmp(p->length_from, "--", 2) == 0;
+    if (duration >= 0)
+        fprintf(stderr, "porelab: %s: the run would take %.3g steps (%s: %.6g s at dt = %.6g "
+                        "s); the valid range is 0..%.0e steps: give a larger time step "
+                        "(world{dt = ...}) or a shorter run\n",
+                pl_scene_path(s), duration / p->dt, p->length_from, duration, p->dt,
+                (double)PL_MAX_STEPS);
+    else
+        fprintf(stderr, "porelab: %s: %s = %lld steps is out of range (0..%.0e steps)\n",
+                pl_scene_path(s), p->length_from, p->total_steps, (double)PL_MAX_STEPS);
+    return usage ? PL_EXIT_USAGE : PL_EXIT_FAIL;
 }
 
 int pl_run_plan_make(const pl_opts *o, pl_scene *s, pl_world *w, pl_run_plan *p)
 {
     pl_scene_run r;
+    int rc;
     if (pl_scene_run_settings(s, &r) != 0) {
         fprintf(stderr, "porelab: %s\n", pl_scene_error(s));
         return PL_EXIT_FAIL;
@@ -40,7 +67,7 @@ int pl_run_plan_make(const pl_opts *o, pl_scene *s, pl_world *w, pl_run_plan *p)
         return PL_EXIT_FAIL;
     }
     p->t_start = pl_world_time(w);
-    double flag;
+    double flag, duration = -1; /* s, when the length comes from a time */
     if (pl_opts_has(o, "--steps")) {
         p->total_steps = steps, p->length_from = "--steps";
     } else if (pl_opts_has(o, "--until")) {
@@ -49,17 +76,21 @@ int pl_run_plan_make(const pl_opts *o, pl_scene *s, pl_world *w, pl_run_plan *p)
                     cmd, until, p->t_start);
             return PL_EXIT_USAGE;
         }
-        p->total_steps = steps_for(until - p->t_start, p->dt), p->length_from = "--until";
+        duration = until - p->t_start;
+        p->total_steps = steps_for(duration, p->dt), p->length_from = "--until";
     } else if (r.steps > 0) {
         p->total_steps = r.steps, p->length_from = "run.steps";
     } else if (r.t_end > 0) {
-        double left = r.t_end > p->t_start ? r.t_end - p->t_start : 0;
-        p->total_steps = steps_for(left, p->dt), p->length_from = "run.t_end";
+        duration = r.t_end > p->t_start ? r.t_end - p->t_start : 0;
+        p->total_steps = steps_for(duration, p->dt), p->length_from = "run.t_end";
     } else if (pl_scene_flag_was_set(s, "TIMESTEPS", &flag) && flag >= 1) {
-        p->total_steps = (long long)flag, p->length_from = "flag TIMESTEPS";
+        p->total_steps = flag <= (double)PL_MAX_STEPS ? (long long)flag : PL_STEPS_NEVER;
+        p->length_from = "flag TIMESTEPS";
     } else {
-        p->total_steps = steps_for(PL_DEFAULT_DURATION, p->dt), p->length_from = "default";
+        duration = PL_DEFAULT_DURATION;
+        p->total_steps = steps_for(duration, p->dt), p->length_from = "default";
     }
+    if ((rc = check_length(s, p, duration)) != 0) return rc;
 
     p->fps = 0, p->every = 0;
     if (pl_opts_has(o, "--fps"))
@@ -71,17 +102,30 @@ int pl_run_plan_make(const pl_opts *o, pl_scene *s, pl_world *w, pl_run_plan *p)
     else if (r.every > 0)
         p->every = r.every, p->frames_from = "run.every";
     else if (pl_scene_flag_was_set(s, "PRINT_INT", &flag) && flag >= 1)
-        p->every = (long long)flag, p->frames_from = "flag PRINT_INT";
+        p->every = flag < 9.0e18 ? (long long)flag : PL_STEPS_NEVER,
+        p->frames_from = "flag PRINT_INT";
     else
         p->fps = PL_DEFAULT_FPS, p->frames_from = "default";
     if (p->fps > 0 && p->fps * p->dt >= 1) /* more frames than steps: one per step */
         p->fps = 0, p->every = 1;
+    long long frames = pl_run_plan_frame_count(p);
+    if (frames > INT_MAX) {
+        fprintf(stderr, "porelab: %s: the run would draw %lld frames (frames from %s); the "
+                        "valid range is 1..%d frames: draw fewer (--fps, --every)\n",
+                pl_scene_path(s), frames, p->frames_from, INT_MAX);
+        return strncmp(p->frames_from, "--", 2) == 0 ? PL_EXIT_USAGE : PL_EXIT_FAIL;
+    }
     return 0;
+}
+
+long long pl_run_plan_steps_to(const pl_run_plan *p, double t)
+{
+    return t > p->t_start ? steps_for(t - p->t_start, p->dt) : 0;
 }
 
 long long pl_run_plan_frame_step(const pl_run_plan *p, long long k)
 {
-    if (p->every > 0) return k * p->every;
+    if (p->every > 0) return k <= PL_STEPS_NEVER / p->every ? k * p->every : PL_STEPS_NEVER;
     return k == 0 ? 0 : steps_for((double)k / p->fps, p->dt);
 }
 
@@ -100,4 +144,20 @@ int pl_run_plan_video_fps(const pl_run_plan *p)
     double f = p->every > 0 ? PL_DEFAULT_FPS : p->fps;
     int v = (int)lround(f);
     return v < 1 ? 1 : v > 240 ? 240 : v;
+}
+
+int pl_run_plan_check_view(const pl_scene *s, const pl_render_options *o)
+{
+    if (o->auto_camera) return 0;
+    const double lo = PL_VIEW_MIN_SIDE, hi = PL_VIEW_MAX_SIDE, far = PL_VIEW_MAX_COORD;
+    const double v[4] = {o->view_lo.x, o->view_lo.y, o->view_hi.x, o->view_hi.y};
+    const double wx = v[2] - v[0], wy = v[3] - v[1];
+    int ok = 1;
+    for (int i = 0; i < 4; i++) ok = ok && isfinite(v[i]) && fabs(v[i]) <= far;
+    ok = ok && wx >= lo && wx <= hi && wy >= lo && wy <= hi;
+    if (ok) return 0;
+    fprintf(stderr, "porelab: %s: render: camera {%g, %g, %g, %g} is %g x %g m; the valid "
+                    "range is %g..%g m each side, corners within +-%g m\n",
+            pl_scene_path(s), v[0], v[1], v[2], v[3], wx, wy, lo, hi, far);
+    return PL_EXIT_FAIL;
 }

@@ -11,10 +11,28 @@
 
 #include <lauxlib.h>
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define FN "chart"
+
+/* Raises "scene.lua:12: chart: <message>". The message is formatted by vsnprintf first:
+   lua_pushfstring knows no %g or %lld ("invalid option '%g' to 'lua_pushfstring'"). */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3), noreturn))
+#endif
+static void chart_error(lua_State *L, const char *fmt, ...)
+{
+    char msg[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    pl_lua_error(L, "%s", msg);
+    abort(); /* not reached: pl_lua_error raises */
+}
 
 static const char *const chart_fields[] = {"file", "title", "xlabel", "ylabel", "size", "series",
                                            "xrange", "yrange", "logx", "logy", "legend", "grid",
@@ -30,11 +48,11 @@ static double *number_array(lua_State *L, int t, const char *what, const char *f
 {
     lua_getfield(L, t, field);
     if (!lua_istable(L, -1))
-        pl_lua_error(L, FN ": %s.%s must be an array of numbers (got %s)", what, field,
+        chart_error(L, FN ": %s.%s must be an array of numbers (got %s)", what, field,
                      luaL_typename(L, -1));
     lua_Integer len = luaL_len(L, -1);
     if (len < 1 || len > 10000000)
-        pl_lua_error(L, FN ": %s.%s must have 1 to 10000000 values (got %lld)", what, field,
+        chart_error(L, FN ": %s.%s must have 1 to 10000000 values (got %lld)", what, field,
                      (long long)len);
     /* a full userdata owns the buffer, so a Lua error below cannot leak it */
     double *v = lua_newuserdatauv(L, sizeof(double) * (size_t)len, 0);
@@ -44,7 +62,7 @@ static double *number_array(lua_State *L, int t, const char *what, const char *f
         int ok;
         v[i - 1] = lua_tonumberx(L, -1, &ok);
         if (!ok)
-            pl_lua_error(L, FN ": %s.%s[%lld] must be a number (got %s)", what, field,
+            chart_error(L, FN ": %s.%s[%lld] must be a number (got %s)", what, field,
                          (long long)i, luaL_typename(L, -1));
         lua_pop(L, 1);
     }
@@ -58,7 +76,7 @@ static void range(lua_State *L, int t, const char *field, double *lo, double *hi
     if (!pl_lua_has_field(L, t, field)) return;
     pl_vec2 r = pl_lua_field_vec2(L, t, FN, field, (pl_vec2){0, 0});
     if (!(r.y > r.x) || !isfinite(r.x) || !isfinite(r.y))
-        pl_lua_error(L, FN ": %s must be {min, max} with min < max (got {%g, %g})", field, r.x, r.y);
+        chart_error(L, FN ": %s must be {min, max} with min < max (got {%g, %g})", field, r.x, r.y);
     *lo = r.x;
     *hi = r.y;
 }
@@ -68,10 +86,10 @@ static int l_chart(lua_State *L)
     pl_lua_check_def(L, 1, FN);
     pl_lua_check_fields(L, 1, FN, chart_fields);
     const char *file = pl_lua_field_string(L, 1, FN, "file", NULL);
-    if (!file) pl_lua_error(L, FN ": file is required (a .png, .svg or .pdf name in the output folder)");
+    if (!file) chart_error(L, FN ": file is required (a .png, .svg or .pdf name in the output folder)");
     const char *dot = strrchr(file, '.');
     if (!dot || (strcmp(dot, ".png") && strcmp(dot, ".svg") && strcmp(dot, ".pdf")))
-        pl_lua_error(L, FN ": file must end in .png, .svg or .pdf (got '%s')", file);
+        chart_error(L, FN ": file must end in .png, .svg or .pdf (got '%s')", file);
     char path[4096];
     pl_lua_output_path(L, file, path, sizeof path, FN);
 
@@ -82,7 +100,7 @@ static int l_chart(lua_State *L)
     if (pl_lua_has_field(L, 1, "size")) {
         pl_vec2 sz = pl_lua_field_vec2(L, 1, FN, "size", (pl_vec2){0, 0});
         if (!(sz.x >= 100 && sz.x <= 8192 && sz.y >= 100 && sz.y <= 8192))
-            pl_lua_error(L, FN ": size must be {width, height} with each in 100..8192 (got {%g, %g})",
+            chart_error(L, FN ": size must be {width, height} with each in 100..8192 (got {%g, %g})",
                          sz.x, sz.y);
         def.width = (int)sz.x;
         def.height = (int)sz.y;
@@ -96,12 +114,12 @@ static int l_chart(lua_State *L)
 
     lua_getfield(L, 1, "series");
     if (!lua_istable(L, -1))
-        pl_lua_error(L, FN ": series must be a list of {name, x, y, style, color, width} (got %s)",
+        chart_error(L, FN ": series must be a list of {name, x, y, style, color, width} (got %s)",
                      luaL_typename(L, -1));
     const int st = lua_gettop(L);
     lua_Integer ns = luaL_len(L, st);
     if (ns < 1 || ns > PL_CHART_MAX_SERIES)
-        pl_lua_error(L, FN ": series must hold 1 to %d entries (got %lld)", PL_CHART_MAX_SERIES,
+        chart_error(L, FN ": series must hold 1 to %d entries (got %lld)", PL_CHART_MAX_SERIES,
                      (long long)ns);
     pl_chart_series ser[PL_CHART_MAX_SERIES];
     memset(ser, 0, sizeof ser);
@@ -112,14 +130,14 @@ static int l_chart(lua_State *L)
         lua_geti(L, st, k + 1);
         const int t = lua_gettop(L);
         if (!lua_istable(L, t))
-            pl_lua_error(L, FN ": %s must be a table {name, x, y, ...} (got %s)", what, luaL_typename(L, t));
+            chart_error(L, FN ": %s must be a table {name, x, y, ...} (got %s)", what, luaL_typename(L, t));
         pl_lua_check_fields(L, t, FN, series_fields);
         ser[k].name = pl_lua_field_string(L, t, FN, "name", NULL);
         int nx, ny;
         ser[k].x = number_array(L, t, what, "x", &nx);
         ser[k].y = number_array(L, t, what, "y", &ny);
         if (nx != ny)
-            pl_lua_error(L, FN ": %s: x and y must have the same length (got %d and %d)", what, nx, ny);
+            chart_error(L, FN ": %s: x and y must have the same length (got %d and %d)", what, nx, ny);
         ser[k].n = nx;
         ser[k].style = (pl_series_style)pl_lua_field_option(L, t, FN, "style", 0, styles);
         if (pl_lua_has_field(L, t, "color")) {
@@ -138,7 +156,7 @@ static int l_chart(lua_State *L)
     def.series_count = (int)ns;
     char err[512];
     if (pl_chart_write(path, &def, err, sizeof err) != 0)
-        pl_lua_error(L, FN ": cannot write %s: %s", file, err);
+        chart_error(L, FN ": cannot write %s: %s", file, err);
     lua_pushstring(L, path);
     return 1;
 }

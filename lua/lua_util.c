@@ -1,5 +1,6 @@
 #include "lua_util.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -37,6 +38,28 @@ int pl_lua_range_error(lua_State *L, const char *fn, const char *field, const ch
     char num[64];
     snprintf(num, sizeof num, "%.10g", got);
     return pl_lua_error(L, "%s: %s must be %s (got %s)", fn, field, range, num);
+}
+
+void pl_lua_check_range(lua_State *L, const char *fn, const char *field, double v, double lo,
+                        double hi, int open_lo, const char *unit)
+{
+    if (isfinite(v) && (open_lo ? v > lo : v >= lo) && v <= hi) return;
+    char range[160];
+    snprintf(range, sizeof range, "a finite number in %s%.10g, %.10g]%s%s", open_lo ? "(" : "[", lo,
+             hi, unit && unit[0] ? " " : "", unit ? unit : "");
+    pl_lua_range_error(L, fn, field, range, v);
+}
+
+void pl_lua_check_vec2_range(lua_State *L, const char *fn, const char *field, pl_vec2 v,
+                             double limit, const char *unit)
+{
+    if (isfinite(v.x) && isfinite(v.y) && fabs(v.x) <= limit && fabs(v.y) <= limit) return;
+    char gx[40], gy[40], lim[40];
+    snprintf(gx, sizeof gx, "%.10g", v.x);
+    snprintf(gy, sizeof gy, "%.10g", v.y);
+    snprintf(lim, sizeof lim, "%.10g", limit); /* lua_pushfstring knows no %g precision */
+    pl_lua_error(L, "%s: %s must be a vector of finite numbers within +-%s%s%s (got {%s, %s})", fn,
+                 field, lim, unit && unit[0] ? " " : "", unit ? unit : "", gx, gy);
 }
 
 void pl_lua_check_def(lua_State *L, int arg, const char *fn)

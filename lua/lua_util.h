@@ -26,6 +26,30 @@ int pl_lua_range_error(lua_State *L, const char *fn, const char *field, const ch
         if (!(cond)) pl_lua_range_error((L), (fn), (field), (range), (v));                 \
     } while (0)
 
+/* Range checks for numbers read from scenes: v must be finite and in [lo, hi] (the lower end
+ * excluded with PL_LUA_OPEN_LO, i.e. (lo, hi]); otherwise raises
+ * "fn: field must be a finite number in [lo, hi] unit (got v)" at the scene line. */
+/* The ranges of scene numbers (docs/scene-reference.md): wide enough for any scene in SI or
+ * MIMES units, finite, and far from overflow in energies (m v^2, k delta^2). */
+#define PL_LUA_MAX_COORD 1e6     /* positions, lengths, radii, m */
+#define PL_LUA_MAX_SPEED 1e6     /* m/s */
+#define PL_LUA_MAX_SPIN 1e6      /* rad/s */
+#define PL_LUA_MAX_ANGLE 1e4     /* rad */
+#define PL_LUA_MAX_ACCEL 1e6     /* gravity, m/s^2 (the GRAVITY_X/Y flags' range) */
+#define PL_LUA_MAX_FORCE 1e15    /* loads, cohesion, N (moments N m) */
+#define PL_LUA_MAX_DENSITY 1e9   /* kg/m^3 */
+#define PL_LUA_MAX_STIFFNESS 1e15 /* kn, ks N/m, young Pa */
+#define PL_LUA_MAX_DASHPOT 1e12  /* cn, cs N s/m, global damping */
+#define PL_LUA_MAX_FRICTION 100  /* friction and rolling coefficients */
+#define PL_LUA_CLOSED 0
+#define PL_LUA_OPEN_LO 1
+void pl_lua_check_range(lua_State *L, const char *fn, const char *field, double v, double lo,
+                        double hi, int open_lo, const char *unit);
+/* Both components finite and within -limit..limit: "fn: field must be a vector of finite
+ * numbers within +-limit unit (got {x, y})". */
+void pl_lua_check_vec2_range(lua_State *L, const char *fn, const char *field, pl_vec2 v,
+                             double limit, const char *unit);
+
 /* Checks that argument arg is a table (a "def" table); raises "fn: expected a table ...". */
 void pl_lua_check_def(lua_State *L, int arg, const char *fn);
 

@@ -53,7 +53,8 @@ void pl_lua_add_body(lua_State *L, int world_idx, const pl_body_def *def, const 
 /* Body constructor helpers shared by wrap_body.c and wrap_shapes.c: the common fields of the
  * def table at index 2 (material, motion, fixed, velocity, omega, angle, id), and required
  * fields. COMMON_BODY_FIELDS lists the common names for pl_lua_check_fields. */
-#define PL_LUA_COMMON_BODY_FIELDS "material", "motion", "fixed", "velocity", "omega", "angle", "id"
+#define PL_LUA_COMMON_BODY_FIELDS "material", "motion", "fixed", "velocity", "omega", "angle", "id", \
+    "fixed_rotation", "guide"
 pl_body_def pl_lua_read_common(lua_State *L, const char *fn, pl_motion_type motion);
 pl_vec2 pl_lua_required_vec2(lua_State *L, const char *fn, const char *field);
 double pl_lua_required_positive(lua_State *L, const char *fn, const char *field);

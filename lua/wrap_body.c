@@ -64,11 +64,17 @@ pl_body_def pl_lua_read_common(lua_State *L, const char *fn, pl_motion_type moti
     d.velocity = pl_lua_field_vec2(L, 2, fn, "velocity", d.velocity);
     d.omega = pl_lua_field_number(L, 2, fn, "omega", d.omega);
     d.angle = pl_lua_field_number(L, 2, fn, "angle", d.angle);
-    PL_LUA_CHECK(L, isfinite(d.velocity.x) && isfinite(d.velocity.y), fn, "velocity",
-                 "finite", d.velocity.x + d.velocity.y);
-    PL_LUA_CHECK(L, isfinite(d.omega), fn, "omega", "finite", d.omega);
-    PL_LUA_CHECK(L, isfinite(d.angle), fn, "angle", "finite", d.angle);
+    pl_lua_check_vec2_range(L, fn, "velocity", d.velocity, PL_LUA_MAX_SPEED, "m/s");
+    pl_lua_check_range(L, fn, "omega", d.omega, -PL_LUA_MAX_SPIN, PL_LUA_MAX_SPIN, PL_LUA_CLOSED, "rad/s");
+    pl_lua_check_range(L, fn, "angle", d.angle, -PL_LUA_MAX_ANGLE, PL_LUA_MAX_ANGLE, PL_LUA_CLOSED, "rad");
     d.user_id = pl_lua_field_int(L, 2, fn, "id", d.user_id);
+    d.fixed_rotation = pl_lua_field_bool(L, 2, fn, "fixed_rotation", 0);
+    d.guide = pl_lua_field_vec2(L, 2, fn, "guide", d.guide);
+    pl_lua_check_vec2_range(L, fn, "guide", d.guide, 1e6, "");
+    if (d.guide.x != 0 || d.guide.y != 0) {
+        if (motion == PL_MOTION_PRESCRIBED || d.motion == PL_MOTION_PRESCRIBED)
+            pl_lua_error(L, "%s: guide is for bodies that move under forces (not prescribed ones)", fn);
+    }
     return d;
 }
 
@@ -77,7 +83,7 @@ pl_vec2 pl_lua_required_vec2(lua_State *L, const char *fn, const char *field)
     if (!pl_lua_has_field(L, 2, field))
         pl_lua_error(L, "%s: %s is required (a vector {x, y} in m)", fn, field);
     pl_vec2 v = pl_lua_field_vec2(L, 2, fn, field, (pl_vec2){0, 0});
-    PL_LUA_CHECK(L, isfinite(v.x) && isfinite(v.y), fn, field, "finite", v.x + v.y);
+    pl_lua_check_vec2_range(L, fn, field, v, PL_LUA_MAX_COORD, "m");
     return v;
 }
 
@@ -86,7 +92,7 @@ double pl_lua_required_positive(lua_State *L, const char *fn, const char *field)
     if (!pl_lua_has_field(L, 2, field))
         pl_lua_error(L, "%s: %s is required (m, > 0)", fn, field);
     double v = pl_lua_field_number(L, 2, fn, field, 0);
-    PL_LUA_CHECK(L, v > 0 && isfinite(v), fn, field, "> 0", v);
+    pl_lua_check_range(L, fn, field, v, 0, PL_LUA_MAX_COORD, PL_LUA_OPEN_LO, "m");
     return v;
 }
 
@@ -148,9 +154,10 @@ static int w_polygon(lua_State *L)
     pl_vec2 v[PL_MAX_POLY_VERTICES];
     for (int i = 0; i < n; i++) {
         lua_geti(L, -1, i + 1);
-        if (!pl_lua_to_vec2(L, -1, &v[i]) || !isfinite(v[i].x) || !isfinite(v[i].y))
-            pl_lua_error(L, "%s: vertices[%d] must be a vector {x, y} of two finite numbers",
-                         fn, i + 1);
+        if (!pl_lua_to_vec2(L, -1, &v[i]) || !isfinite(v[i].x) || !isfinite(v[i].y) ||
+            fabs(v[i].x) > PL_LUA_MAX_COORD || fabs(v[i].y) > PL_LUA_MAX_COORD)
+            pl_lua_error(L, "%s: vertices[%d] must be a vector {x, y} of two finite numbers "
+                         "within +-1e6 m", fn, i + 1);
         lua_pop(L, 1);
     }
     lua_pop(L, 1);
@@ -315,6 +322,8 @@ static int b_set_velocity(lua_State *L)
     int i = pl_lua_check_body(L, 1, &w);
     pl_vec2 v = {luaL_checknumber(L, 2), luaL_checknumber(L, 3)};
     double omega = luaL_optnumber(L, 4, 0);
+    pl_lua_check_vec2_range(L, "set_velocity", "velocity", v, PL_LUA_MAX_SPEED, "m/s");
+    pl_lua_check_range(L, "set_velocity", "omega", omega, -PL_LUA_MAX_SPIN, PL_LUA_MAX_SPIN, PL_LUA_CLOSED, "rad/s");
     pl_lua_check_status(L, w, pl_world_prescribe_velocity(w, i, v, omega), "set_velocity");
     return 0;
 }
@@ -332,11 +341,15 @@ static int b_set_state(lua_State *L)
     if (pl_lua_has_field(L, 2, "position") || pl_lua_has_field(L, 2, "angle")) {
         pl_vec2 p = pl_lua_field_vec2(L, 2, fn, "position", b.position);
         double a = pl_lua_field_number(L, 2, fn, "angle", b.angle);
+        pl_lua_check_vec2_range(L, fn, "position", p, PL_LUA_MAX_COORD, "m");
+        pl_lua_check_range(L, fn, "angle", a, -PL_LUA_MAX_ANGLE, PL_LUA_MAX_ANGLE, PL_LUA_CLOSED, "rad");
         pl_lua_check_status(L, w, pl_world_set_body_position(w, i, p, a), fn);
     }
     if (pl_lua_has_field(L, 2, "velocity") || pl_lua_has_field(L, 2, "omega")) {
         pl_vec2 v = pl_lua_field_vec2(L, 2, fn, "velocity", b.velocity);
         double om = pl_lua_field_number(L, 2, fn, "omega", b.omega);
+        pl_lua_check_vec2_range(L, fn, "velocity", v, PL_LUA_MAX_SPEED, "m/s");
+        pl_lua_check_range(L, fn, "omega", om, -PL_LUA_MAX_SPIN, PL_LUA_MAX_SPIN, PL_LUA_CLOSED, "rad/s");
         pl_lua_check_status(L, w, pl_world_set_body_velocity(w, i, v, om), fn);
     }
     return 0;
@@ -357,6 +370,8 @@ static int b_set_load(lua_State *L)
     int i = pl_lua_check_body(L, 1, &w);
     pl_vec2 f = {luaL_checknumber(L, 2), luaL_checknumber(L, 3)};
     double moment = luaL_optnumber(L, 4, 0);
+    pl_lua_check_vec2_range(L, "set_load", "force", f, PL_LUA_MAX_FORCE, "N");
+    pl_lua_check_range(L, "set_load", "moment", moment, -PL_LUA_MAX_FORCE, PL_LUA_MAX_FORCE, PL_LUA_CLOSED, "N m");
     pl_lua_check_status(L, w, pl_world_set_body_load(w, i, f, moment), "set_load");
     return 0;
 }
@@ -366,8 +381,19 @@ static int b_set_density(lua_State *L)
     pl_world *w;
     int i = pl_lua_check_body(L, 1, &w);
     double rho = luaL_checknumber(L, 2);
-    PL_LUA_CHECK(L, rho > 0 && isfinite(rho), "set_density", "density", "> 0 kg/m^3", rho);
+    pl_lua_check_range(L, "set_density", "density", rho, 0, PL_LUA_MAX_DENSITY, PL_LUA_OPEN_LO, "kg/m^3");
     pl_lua_check_status(L, w, pl_world_set_body_density(w, i, rho), "set_density");
+    return 0;
+}
+
+/* body:set_fixed_rotation(true|false): a guided body keeps its angle (an oedometer piston). */
+static int b_set_fixed_rotation(lua_State *L)
+{
+    pl_world *w;
+    int i = pl_lua_check_body(L, 1, &w);
+    luaL_checktype(L, 2, LUA_TBOOLEAN);
+    pl_lua_check_status(L, w, pl_world_set_body_fixed_rotation(w, i, lua_toboolean(L, 2)),
+                        "set_fixed_rotation");
     return 0;
 }
 
@@ -406,7 +432,8 @@ static const luaL_Reg body_methods[] = {
     {"area", b_area},           {"vertices", b_vertices},
     {"set_velocity", b_set_velocity}, {"set_state", b_set_state},
     {"set_motion", b_set_motion},     {"set_load", b_set_load},
-    {"set_density", b_set_density},   {NULL, NULL}};
+    {"set_density", b_set_density},   {"set_fixed_rotation", b_set_fixed_rotation},
+    {NULL, NULL}};
 
 void pl_lua_register_body(lua_State *L)
 {

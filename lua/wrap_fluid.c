@@ -20,6 +20,12 @@ static pl_vec2 vec_field(lua_State *L, int t, const char *fn, const char *field)
 
 /* w:fluid_quad{corners = {{x, y} x 4, counter-clockwise}, ndivx = 4, ndivy = 4, id = n,
  *              anisotropy = 1} -> quad index (1-based) */
+/* Queries read the field as it stands; a scene reading it before the first step (or after
+   changing quads or lines) gets it built first, as the engine's explicit prepare step. */
+static void prepare(lua_State *L, pl_lua_world *lw) {
+    pl_lua_check_status(L, lw->w, pl_world_prepare(lw->w), "fluid");
+}
+
 static int f_quad(lua_State *L)
 {
     static const char *const fields[] = {"corners", "ndivx", "ndivy", "id", "anisotropy", NULL};
@@ -57,6 +63,8 @@ static int f_bc(lua_State *L)
     pl_lua_check_def(L, 2, fn);
     pl_lua_check_fields(L, 2, fn, fields);
     pl_vec2 a = vec_field(L, 2, fn, "from"), b = vec_field(L, 2, fn, "to");
+    if (a.x == b.x && a.y == b.y)
+        pl_lua_error(L, "%s: from and to must differ (a boundary line needs a length > 0)", fn);
     if (!pl_lua_has_field(L, 2, "head")) pl_lua_error(L, "%s: head is required (pressure head, m)", fn);
     int l = pl_world_add_fluid_bc(lw->w, a, b, pl_lua_field_number(L, 2, fn, "head", 0));
     pl_lua_check_status(L, lw->w, l, fn);
@@ -122,6 +130,7 @@ static int f_set_head(lua_State *L)
 static int f_nodes(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
+    prepare(L, lw);
     int n = pl_world_fluid_node_count(lw->w);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * (size_t)(n > 0 ? n : 1));
     if (!xy) return luaL_error(L, "fluid_nodes: out of memory");
@@ -138,6 +147,7 @@ static int f_nodes(lua_State *L)
 static int f_triangles(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
+    prepare(L, lw);
     int n = pl_world_fluid_triangle_count(lw->w);
     int *t = malloc(sizeof(int) * 3 * (size_t)(n > 0 ? n : 1));
     if (!t) return luaL_error(L, "fluid_triangles: out of memory");
@@ -172,6 +182,7 @@ static int push_array(lua_State *L, const double *v, int n)
 static int f_node_field(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
+    prepare(L, lw);
     int which = luaL_checkoption(L, 2, NULL, node_fields);
     int n = pl_world_fluid_node_count(lw->w);
     double *v = malloc(sizeof(double) * (size_t)(n > 0 ? n : 1));
@@ -187,6 +198,7 @@ static int f_node_field(lua_State *L)
 static int f_element_field(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
+    prepare(L, lw);
     int which = luaL_checkoption(L, 2, NULL, elem_fields);
     int n = pl_world_fluid_triangle_count(lw->w);
     double *v = malloc(sizeof(double) * (size_t)(n > 0 ? n : 1));
@@ -201,6 +213,7 @@ static int f_element_field(lua_State *L)
 static int f_pressure_at(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
+    prepare(L, lw);
     pl_vec2 p = {luaL_checknumber(L, 2), luaL_checknumber(L, 3)};
     double pr, h;
     if (!pl_world_fluid_pressure_at(lw->w, p, &pr, &h)) {
@@ -216,6 +229,7 @@ static int f_pressure_at(lua_State *L)
 static int f_line_inflow(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
+    prepare(L, lw);
     int line = (int)luaL_checkinteger(L, 2) - 1;
     double q = pl_world_fluid_line_inflow(lw->w, line);
     if (q != q) pl_lua_error(L, "fluid_line_inflow: no boundary line %d", line + 1);
@@ -242,6 +256,7 @@ static int body_arg(lua_State *L, int idx)
 static int f_body_force(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
+    prepare(L, lw);
     int b = body_arg(L, 2);
     pl_vec2 F;
     double M;
@@ -299,6 +314,7 @@ static int f_write_geometry(lua_State *L)
     pl_lua_world *lw = pl_lua_check_world(L, 1);
     char path[PATH_MAX];
     pl_lua_output_path(L, luaL_checkstring(L, 2), path, sizeof path, "fluid_write_geometry");
+    prepare(L, lw);
     pl_lua_check_status(L, lw->w, pl_world_fluid_write_geometry(lw->w, path), "fluid_write_geometry");
     lua_pushstring(L, path);
     return 1;

@@ -86,12 +86,11 @@ static int w_material(lua_State *L)
     if (!pl_lua_has_field(L, 2, "density"))
         pl_lua_error(L, "%s: density is required (kg/m^3, > 0)", fn);
     d.density = pl_lua_field_number(L, 2, fn, "density", d.density);
-    PL_LUA_CHECK(L, d.density > 0 && isfinite(d.density), fn, "density", "> 0 kg/m^3",
-                 d.density);
+    pl_lua_check_range(L, fn, "density", d.density, 0, PL_LUA_MAX_DENSITY, PL_LUA_OPEN_LO, "kg/m^3");
     d.kn = pl_lua_field_number(L, 2, fn, "kn", 0);
-    PL_LUA_CHECK(L, d.kn >= 0 && isfinite(d.kn), fn, "kn", ">= 0 N/m", d.kn);
+    pl_lua_check_range(L, fn, "kn", d.kn, 0, PL_LUA_MAX_STIFFNESS, PL_LUA_CLOSED, "N/m");
     d.young = pl_lua_field_number(L, 2, fn, "young", d.young);
-    PL_LUA_CHECK(L, d.young >= 0, fn, "young", ">= 0 Pa", d.young);
+    pl_lua_check_range(L, fn, "young", d.young, 0, PL_LUA_MAX_STIFFNESS, PL_LUA_CLOSED, "Pa");
     if (d.kn == 0 && !(d.young > 0))
         pl_lua_error(L, "%s: give a normal stiffness kn (N/m, > 0) or a Young's modulus young "
                      "(Pa, > 0)", fn);
@@ -100,19 +99,19 @@ static int w_material(lua_State *L)
                  "in (0, 1)", d.young_overlap);
     if (pl_lua_has_field(L, 2, "ks")) {
         d.ks = pl_lua_field_number(L, 2, fn, "ks", d.ks);
-        PL_LUA_CHECK(L, d.ks >= 0, fn, "ks", ">= 0 N/m", d.ks);
+        pl_lua_check_range(L, fn, "ks", d.ks, 0, PL_LUA_MAX_STIFFNESS, PL_LUA_CLOSED, "N/m");
     }
     d.friction = pl_lua_field_number(L, 2, fn, "friction", d.friction);
-    PL_LUA_CHECK(L, d.friction >= 0, fn, "friction", ">= 0", d.friction);
+    pl_lua_check_range(L, fn, "friction", d.friction, 0, PL_LUA_MAX_FRICTION, PL_LUA_CLOSED, "");
     d.rolling = pl_lua_field_number(L, 2, fn, "rolling", d.rolling);
-    PL_LUA_CHECK(L, d.rolling >= 0 && isfinite(d.rolling), fn, "rolling", ">= 0", d.rolling);
+    pl_lua_check_range(L, fn, "rolling", d.rolling, 0, PL_LUA_MAX_FRICTION, PL_LUA_CLOSED, "");
     d.cohesion = pl_lua_field_number(L, 2, fn, "cohesion", d.cohesion);
-    PL_LUA_CHECK(L, d.cohesion >= 0, fn, "cohesion", ">= 0 N", d.cohesion);
+    pl_lua_check_range(L, fn, "cohesion", d.cohesion, 0, PL_LUA_MAX_FORCE, PL_LUA_CLOSED, "N");
     d.cn = pl_lua_field_number(L, 2, fn, "cn", d.cn);
-    PL_LUA_CHECK(L, d.cn >= 0, fn, "cn", ">= 0 N s/m", d.cn);
+    pl_lua_check_range(L, fn, "cn", d.cn, 0, PL_LUA_MAX_DASHPOT, PL_LUA_CLOSED, "N s/m");
     if (pl_lua_has_field(L, 2, "cs")) {
         d.cs = pl_lua_field_number(L, 2, fn, "cs", d.cs);
-        PL_LUA_CHECK(L, d.cs >= 0, fn, "cs", ">= 0 N s/m", d.cs);
+        pl_lua_check_range(L, fn, "cs", d.cs, 0, PL_LUA_MAX_DASHPOT, PL_LUA_CLOSED, "N s/m");
     }
     if (pl_lua_has_field(L, 2, "restitution")) {
         if (pl_lua_has_field(L, 2, "cn") || pl_lua_has_field(L, 2, "cs"))
@@ -138,18 +137,45 @@ static int w_pair(lua_State *L)
     int b = pl_lua_material_index(L, 1, 3, fn);
     pl_lua_check_def(L, 4, fn);
     pl_lua_check_fields(L, 4, fn, pair_fields);
-    pl_pair_def d = pl_default_pair_def();
+    /* merge: the fields given replace those of the pair's existing override, the others are
+       kept (porelab.mimes sets friction, kn and ks of a pair in three separate calls) */
+    pl_pair_def d;
+    pl_lua_check_status(L, w, pl_world_pair_override(w, a, b, &d), fn);
     double *v[] = {&d.kn, &d.ks, &d.friction, &d.cohesion, &d.cn, &d.cs, &d.restitution, &d.rolling};
+    static const double pair_max[] = {PL_LUA_MAX_STIFFNESS, PL_LUA_MAX_STIFFNESS, PL_LUA_MAX_FRICTION,
+                                      PL_LUA_MAX_FORCE,     PL_LUA_MAX_DASHPOT,   PL_LUA_MAX_DASHPOT,
+                                      1,                    PL_LUA_MAX_FRICTION};
+    static const char *const pair_units[] = {"N/m", "N/m", "", "N", "N s/m", "N s/m", "", ""};
     for (int i = 0; pair_fields[i]; i++) {
         if (!pl_lua_has_field(L, 4, pair_fields[i])) continue;
         *v[i] = pl_lua_field_number(L, 4, fn, pair_fields[i], -1);
-        PL_LUA_CHECK(L, *v[i] >= 0 && isfinite(*v[i]), fn, pair_fields[i], ">= 0", *v[i]);
+        pl_lua_check_range(L, fn, pair_fields[i], *v[i], 0, pair_max[i], PL_LUA_CLOSED, pair_units[i]);
     }
     if (d.restitution >= 0)
         PL_LUA_CHECK(L, d.restitution > 0 && d.restitution <= 1, fn, "restitution",
                      "in (0, 1]", d.restitution);
     pl_lua_check_status(L, w, pl_world_set_pair(w, a, b, &d), fn);
     return 0;
+}
+
+/* world:pair_params(a, b): the parameters contacts between the two materials use (combination
+   rules and overrides); restitution is absent when the pair uses the dashpots cn, cs. */
+static int w_pair_params(lua_State *L)
+{
+    const char *fn = "pair_params";
+    pl_world *w = pl_lua_check_world(L, 1)->w;
+    int a = pl_lua_material_index(L, 1, 2, fn);
+    int b = pl_lua_material_index(L, 1, 3, fn);
+    pl_pair_def d;
+    pl_lua_check_status(L, w, pl_world_pair_params(w, a, b, &d), fn);
+    const double v[] = {d.kn, d.ks, d.friction, d.cohesion, d.cn, d.cs, d.restitution, d.rolling};
+    lua_createtable(L, 0, 8);
+    for (int i = 0; pair_fields[i]; i++) {
+        if (v[i] < 0) continue;
+        lua_pushnumber(L, v[i]);
+        lua_setfield(L, -2, pair_fields[i]);
+    }
+    return 1;
 }
 
 static int w_find_material(lua_State *L)
@@ -172,6 +198,7 @@ static int w_material_count(lua_State *L)
 const luaL_Reg pl_lua_material_constructors[] = {
     {"material", w_material},
     {"pair", w_pair},
+    {"pair_params", w_pair_params},
     {"find_material", w_find_material},
     {"material_count", w_material_count},
     {NULL, NULL}};

@@ -104,33 +104,32 @@ static pl_world_def read_world_def(lua_State *L, int t)
     pl_lua_check_def(L, t, fn);
     pl_lua_check_fields(L, t, fn, world_fields);
     d.gravity = pl_lua_field_vec2(L, t, fn, "gravity", d.gravity);
+    pl_lua_check_vec2_range(L, fn, "gravity", d.gravity, PL_LUA_MAX_ACCEL, "m/s^2");
     d.dt = pl_lua_field_number(L, t, fn, "dt", d.dt);
     PL_LUA_CHECK(L, d.dt >= 0 && isfinite(d.dt), fn, "dt", ">= 0 s (0 = automatic)", d.dt);
     d.dt_safety = pl_lua_field_number(L, t, fn, "dt_safety", d.dt_safety);
     PL_LUA_CHECK(L, d.dt_safety > 0 && d.dt_safety <= 1, fn, "dt_safety", "in (0, 1]",
                  d.dt_safety);
     d.max_dt = pl_lua_field_number(L, t, fn, "max_dt", d.max_dt);
-    PL_LUA_CHECK(L, d.max_dt >= 0, fn, "max_dt", ">= 0 s (0 = no cap)", d.max_dt);
+    PL_LUA_CHECK(L, d.max_dt >= 0 && isfinite(d.max_dt), fn, "max_dt", ">= 0 s (0 = no cap)", d.max_dt);
     d.global_c = pl_lua_field_number(L, t, fn, "global_damping", d.global_c);
-    PL_LUA_CHECK(L, d.global_c >= 0, fn, "global_damping", ">= 0 N s/m", d.global_c);
+    pl_lua_check_range(L, fn, "global_damping", d.global_c, 0, PL_LUA_MAX_DASHPOT, PL_LUA_CLOSED, "N s/m");
     d.global_c_rot = pl_lua_field_number(L, t, fn, "global_damping_rot", d.global_c_rot);
-    PL_LUA_CHECK(L, d.global_c_rot >= 0, fn, "global_damping_rot", ">= 0 N m s",
-                 d.global_c_rot);
+    pl_lua_check_range(L, fn, "global_damping_rot", d.global_c_rot, 0, PL_LUA_MAX_DASHPOT, PL_LUA_CLOSED,
+                       "N m s");
     d.rayleigh_alpha = pl_lua_field_number(L, t, fn, "rayleigh_alpha", d.rayleigh_alpha);
-    PL_LUA_CHECK(L, d.rayleigh_alpha >= 0, fn, "rayleigh_alpha", ">= 0 1/s", d.rayleigh_alpha);
+    pl_lua_check_range(L, fn, "rayleigh_alpha", d.rayleigh_alpha, 0, 1e9, PL_LUA_CLOSED, "1/s");
     d.local_damping = pl_lua_field_number(L, t, fn, "local_damping", d.local_damping);
     PL_LUA_CHECK(L, d.local_damping >= 0 && d.local_damping < 1, fn, "local_damping",
                  "in [0, 1)", d.local_damping);
     d.skin = pl_lua_field_number(L, t, fn, "skin", d.skin);
-    PL_LUA_CHECK(L, d.skin >= 0, fn, "skin", ">= 0 m (0 = automatic)", d.skin);
+    pl_lua_check_range(L, fn, "skin", d.skin, 0, PL_LUA_MAX_COORD, PL_LUA_CLOSED, "m (0 = automatic)");
     d.max_overlap_ratio = pl_lua_field_number(L, t, fn, "max_overlap_ratio",
                                               d.max_overlap_ratio);
-    PL_LUA_CHECK(L, d.max_overlap_ratio > 0, fn, "max_overlap_ratio", "> 0",
-                 d.max_overlap_ratio);
+    pl_lua_check_range(L, fn, "max_overlap_ratio", d.max_overlap_ratio, 0, 100, PL_LUA_OPEN_LO, "");
     d.energy_surge_ratio = pl_lua_field_number(L, t, fn, "energy_surge_ratio",
                                                d.energy_surge_ratio);
-    PL_LUA_CHECK(L, d.energy_surge_ratio > 0, fn, "energy_surge_ratio", "> 0",
-                 d.energy_surge_ratio);
+    pl_lua_check_range(L, fn, "energy_surge_ratio", d.energy_surge_ratio, 0, 1e12, PL_LUA_OPEN_LO, "");
     d.guard_interval = pl_lua_field_int(L, t, fn, "guard_interval", d.guard_interval);
     PL_LUA_CHECK(L, d.guard_interval >= 1, fn, "guard_interval", ">= 1 step",
                  d.guard_interval);

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atomic_file.h"
 #include "backend_cairo.h"
 
 static pthread_mutex_t chart_lock = PTHREAD_MUTEX_INITIALIZER;
@@ -245,13 +246,19 @@ int pl_chart_write(const char *path, const pl_chart_def *def, char *err, size_t 
     setenv("PLPLOT_FREETYPE_SANS_FAMILY", "DejaVu Sans", 0);
     cairo_surface_t *surf;
     int W = def->width, H = def->height;
+    /* SVG/PDF: cairo writes a temporary that is renamed into place when complete; PNG:
+       pl_png_write does the same */
+    pl_atomic_file af;
+    af.tmp_path[0] = '\0';
+    if (fmt != 0 && pl_atomic_file_begin(&af, path, err, errlen)) return -1;
     if (fmt == 0) surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
-    else if (fmt == 1) surf = cairo_svg_surface_create(path, W, H);
-    else surf = cairo_pdf_surface_create(path, W, H);
+    else if (fmt == 1) surf = cairo_svg_surface_create(af.tmp_path, W, H);
+    else surf = cairo_pdf_surface_create(af.tmp_path, W, H);
     if (cairo_surface_status(surf) != CAIRO_STATUS_SUCCESS) {
         snprintf(err, errlen, "cannot write %s: %s", path,
                  cairo_status_to_string(cairo_surface_status(surf)));
         cairo_surface_destroy(surf);
+        if (fmt != 0) pl_atomic_file_end(&af, 0, err, errlen);
         return -1;
     }
     if (fmt == 2) {
@@ -301,5 +308,6 @@ int pl_chart_write(const char *path, const pl_chart_def *def, char *err, size_t 
         rc = -1;
     }
     cairo_surface_destroy(surf);
+    if (fmt != 0) rc = pl_atomic_file_end(&af, rc == 0, err, errlen);
     return rc;
 }

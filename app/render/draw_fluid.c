@@ -50,7 +50,7 @@ int pl_render_scene_set_fluid(pl_render_scene *s, const pl_vec2 *nodes, const do
     return 0;
 }
 
-int pl_render_scene_capture_fluid(pl_render_scene *s, pl_world *w, int field) {
+int pl_render_scene_capture_fluid(pl_render_scene *s, const pl_world *w, int field) {
     s->fluid_node_count = s->fluid_tri_count = 0;
     s->fluid_field = field;
     int nn = pl_world_fluid_node_count(w), nt = pl_world_fluid_triangle_count(w);

@@ -42,7 +42,7 @@ int pl_render_scene_capture(pl_render_scene *s, const pl_world *w);
 /// Copies the fluid mesh, the node field `field` (pl_fluid_node_field) and the element
 /// velocities. The fluid queries mesh on demand, hence the non-const world. Returns 0, or -1
 /// when out of memory.
-int pl_render_scene_capture_fluid(pl_render_scene *s, pl_world *w, int field);
+int pl_render_scene_capture_fluid(pl_render_scene *s, const pl_world *w, int field);
 /// Sets a synthetic fluid field (tests, benchmarks): copies nodes, triangles, node values
 /// and optional per-triangle velocities (NULL = zero).
 int pl_render_scene_set_fluid(pl_render_scene *s, const pl_vec2 *nodes, const double *values,

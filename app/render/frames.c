@@ -5,7 +5,10 @@
  * an error code (send with MSG_NOSIGNAL) instead of a SIGPIPE that would kill porelab.
  * GIF: made at close from the PNG frames in two ffmpeg filter passes (palettegen, paletteuse
  * in one filter graph), which needs every frame anyway. ffmpeg's messages go to
- * DIR/ffmpeg.log. */
+ * DIR/ffmpeg.log.
+ * Every file is whole under its final name (atomic_file.h): a frame is written under a hidden
+ * temporary name and renamed when complete (pl_png_write), and ffmpeg writes the video under
+ * a temporary name that is renamed at close when ffmpeg succeeded. */
 #define _POSIX_C_SOURCE 200809L
 #include "render.h"
 
@@ -21,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "atomic_file.h"
 #include "backend_cairo.h"
 #include "draw_world.h"
 
@@ -29,6 +33,7 @@ enum { VIDEO_NONE = 0, VIDEO_MP4 = 1, VIDEO_GIF = 2 };
 struct pl_frame_writer {
     char dir[4096];
     char video[4096];
+    pl_atomic_file video_file; /* ffmpeg writes video_file.tmp_path */
     char log[4200];
     int video_kind;   /* VIDEO_* (NONE also when ffmpeg is missing) */
     int fps;
@@ -146,6 +151,10 @@ pl_frame_writer *pl_frame_writer_open(const char *dir, const char *video_path, i
     pl_draw_list_init(&fw->dl);
     if (kind != VIDEO_NONE) {
         snprintf(fw->video, sizeof fw->video, "%s", video_path);
+        if (pl_atomic_file_begin(&fw->video_file, video_path, err, errlen)) {
+            free(fw);
+            return NULL;
+        }
         if (ffmpeg_on_path()) {
             fw->video_kind = kind;
         } else {
@@ -170,7 +179,8 @@ static int start_mp4(pl_frame_writer *fw, char *err, size_t errlen) {
     char *argv[] = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
                     "-pix_fmt", "rgba", "-s", size, "-r", rate, "-i", "-",
                     "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "veryfast",
-                    "-crf", "20", "-pix_fmt", "yuv420p", "-movflags", "+faststart", fw->video, NULL};
+                    "-crf", "20", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
+                    fw->video_file.tmp_path, NULL};
     pid_t pid = spawn_ffmpeg(argv, sv[0], fw->log);
     close(sv[0]);
     if (pid < 0) {
@@ -208,7 +218,7 @@ int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_
     unsigned fluid = PL_LAYER_MESH | PL_LAYER_PRESSURE | PL_LAYER_ISOLINES | PL_LAYER_VELOCITY;
     if (pl_render_scene_capture(&fw->scene, w) ||
         ((opt->layers & fluid) &&
-         pl_render_scene_capture_fluid(&fw->scene, (pl_world *)w, opt->fluid_field))) {
+         pl_render_scene_capture_fluid(&fw->scene, w, opt->fluid_field))) {
         snprintf(err, errlen, "out of memory while reading the world");
         return -1;
     }
@@ -260,7 +270,8 @@ int pl_frame_writer_close(pl_frame_writer **pfw, char *err, size_t errlen) {
     if (fw->sock >= 0) close(fw->sock);
     if (fw->pid > 0) rc = wait_ffmpeg(fw->pid, fw->video, fw->log, err, errlen);
     if (rc == 0 && fw->video_failed) {
-        snprintf(err, errlen, "the video %s is incomplete (see %s)", fw->video, fw->log);
+        snprintf(err, errlen, "the video %s was not made: ffmpeg stopped accepting frames (see %s)",
+                 fw->video, fw->log);
         rc = -1;
     }
     if (rc == 0 && fw->video_kind == VIDEO_GIF && fw->count > 0) {
@@ -271,7 +282,7 @@ int pl_frame_writer_close(pl_frame_writer **pfw, char *err, size_t errlen) {
         char *argv[] = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-framerate", rate,
                         "-start_number", "0", "-i", pattern, "-frames:v", frames, "-vf",
                         "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer",
-                        "-loop", "0", fw->video, NULL};
+                        "-loop", "0", fw->video_file.tmp_path, NULL};
         pid_t pid = spawn_ffmpeg(argv, -1, fw->log);
         if (pid < 0) {
             snprintf(err, errlen, "cannot start ffmpeg: %s", strerror(errno));
@@ -279,6 +290,10 @@ int pl_frame_writer_close(pl_frame_writer **pfw, char *err, size_t errlen) {
         } else {
             rc = wait_ffmpeg(pid, fw->video, fw->log, err, errlen);
         }
+    }
+    if (fw->video_kind == VIDEO_MP4 ? fw->pid > 0 : fw->video_kind == VIDEO_GIF && fw->count > 0) {
+        /* the video is whole under its final name, or not there */
+        if (pl_atomic_file_end(&fw->video_file, rc == 0, err, errlen)) rc = -1;
     }
     pl_render_scene_free(&fw->scene);
     pl_draw_list_free(&fw->dl);

@@ -1,5 +1,7 @@
 /* PNG reading and writing with libpng. Writing uses a low zlib level and no row filters by
- * default for frames, so encoding does not dominate short runs. */
+ * default for frames, so encoding does not dominate short runs. A PNG is written under a
+ * temporary name and renamed into place when complete (atomic_file.h). */
+#include "atomic_file.h"
 #include "backend_cairo.h"
 
 #include <errno.h>
@@ -38,13 +40,15 @@ int pl_png_write(const char *path, const pl_image *img, int level, int filter, c
     volatile int opaque = op; /* read after setjmp */
     volatile int channels = op ? 3 : 4;
     volatile int zlevel = level < 0 ? 0 : (level > 9 ? 9 : level);
+    pl_atomic_file af;
+    if (pl_atomic_file_begin(&af, path, err, errlen)) return -1;
     uint8_t *row = malloc((size_t)w * 4u);
-    FILE *f = fopen(path, "wb");
+    FILE *f = fopen(af.tmp_path, "wb");
     if (!f || !row) {
         snprintf(err, errlen, "cannot write %s: %s", path, f ? "out of memory" : strerror(errno));
         if (f) fclose(f);
         free(row);
-        return -1;
+        return pl_atomic_file_end(&af, 0, err, errlen);
     }
     png_err_ctx ctx;
     ctx.msg[0] = 0;
@@ -55,15 +59,19 @@ int pl_png_write(const char *path, const pl_image *img, int level, int filter, c
         png_destroy_write_struct(&png, &info);
         fclose(f);
         free(row);
-        return -1;
+        return pl_atomic_file_end(&af, 0, err, errlen);
     }
     if (setjmp(png_jmpbuf(png))) {
-        snprintf(err, errlen, "cannot write %s: %s", path, ctx.msg);
+        /* libpng's "Write Error" says nothing of the cause; errno still holds it */
+        int e = errno;
+        snprintf(err, errlen, "cannot write %s: %s%s%s", path, ctx.msg, e ? ": " : "",
+                 e ? strerror(e) : "");
         png_destroy_write_struct(&png, &info);
         fclose(f);
         free(row);
-        return -1;
+        return pl_atomic_file_end(&af, 0, err, errlen);
     }
+    errno = 0;
     png_init_io(png, f);
     png_set_compression_level(png, zlevel);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, filter ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
@@ -87,11 +95,14 @@ int pl_png_write(const char *path, const pl_image *img, int level, int filter, c
     png_write_end(png, NULL);
     png_destroy_write_struct(&png, &info);
     free(row);
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        return -1;
+    int bad = fflush(f) != 0 || ferror(f);
+    int e = errno;
+    if (fclose(f) != 0 && !bad) bad = 1, e = errno;
+    if (bad) {
+        snprintf(err, errlen, "cannot write %s: %s", path, strerror(e));
+        return pl_atomic_file_end(&af, 0, err, errlen);
     }
-    return 0;
+    return pl_atomic_file_end(&af, 1, err, errlen);
 }
 
 int pl_png_read(const char *path, pl_image *img, char *err, size_t errlen) {

@@ -6,11 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atomic_file.h"
 #include "backend_cairo.h"
 #include "draw_world.h"
 
-#define PL_RENDER_FLUID_LAYERS \
-    (PL_LAYER_MESH | PL_LAYER_PRESSURE | PL_LAYER_ISOLINES | PL_LAYER_VELOCITY)
 
 static const char *const layer_names[] = {"bodies",  "forces",   "time",     "mesh",
                                           "pressure", "isolines", "velocity", "colorbar",
@@ -311,15 +310,17 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     return 0;
 }
 
+pl_status pl_render_prepare(pl_world *w, const pl_render_options *opt, int vtk) {
+    return (opt->layers & PL_RENDER_FLUID_LAYERS) || vtk ? pl_world_prepare(w) : PL_OK;
+}
+
 int pl_render_build(const pl_world *w, const pl_render_options *opt, pl_draw_list *dl,
                     char *err, size_t errlen) {
     pl_render_scene s;
     pl_render_scene_init(&s);
     int rc = pl_render_scene_capture(&s, w);
-    /* the fluid queries mesh on demand, so they take a non-const world; they do not change
-     * the simulated state */
     if (rc == 0 && (opt->layers & PL_RENDER_FLUID_LAYERS))
-        rc = pl_render_scene_capture_fluid(&s, (pl_world *)w, opt->fluid_field);
+        rc = pl_render_scene_capture_fluid(&s, w, opt->fluid_field);
     if (rc) snprintf(err, errlen, "out of memory while reading the world");
     else rc = pl_render_build_scene(dl, &s, opt, err, errlen);
     pl_render_scene_free(&s);
@@ -335,7 +336,17 @@ int pl_render_to_file(const pl_world *w, const pl_render_options *opt, const cha
     pl_draw_list dl;
     pl_draw_list_init(&dl);
     int rc = pl_render_build(w, opt, &dl, err, errlen);
-    if (rc == 0) rc = pl_cairo_write_file(&dl, path, 6, err, errlen);
+    if (rc == 0 && pl_file_format(path) == 0) {
+        rc = pl_cairo_write_file(&dl, path, 6, err, errlen); /* pl_png_write renames itself */
+    } else if (rc == 0) {
+        /* SVG/PDF: cairo writes the temporary, which is renamed into place when complete */
+        pl_atomic_file af;
+        rc = pl_atomic_file_begin(&af, path, err, errlen);
+        if (rc == 0) {
+            rc = pl_cairo_write_file(&dl, af.tmp_path, 6, err, errlen);
+            rc = pl_atomic_file_end(&af, rc == 0, err, errlen);
+        }
+    }
     pl_draw_list_free(&dl);
     return rc;
 }

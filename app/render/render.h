@@ -87,6 +87,13 @@ struct pl_draw_list;
 
 /// Builds the draw list of the world's current state (clears dl first; dl is reused so no
 /// allocation happens in steady state). Returns 0, or -1 with a message in err.
+/* The layers that read a fluid model's field. */
+#define PL_RENDER_FLUID_LAYERS \
+    (PL_LAYER_MESH | PL_LAYER_PRESSURE | PL_LAYER_ISOLINES | PL_LAYER_VELOCITY)
+/* The engine's queries only read: before drawing a fluid layer (or writing VTK, vtk = 1) the
+ * host prepares the world's models (pl_world_prepare) so that a changed mesh or boundary line
+ * and the initial field show. Returns the engine status (the message in pl_world_last_error). */
+pl_status pl_render_prepare(pl_world *w, const pl_render_options *opt, int vtk);
 int pl_render_build(const pl_world *w, const pl_render_options *opt, struct pl_draw_list *dl,
                     char *err, size_t errlen);
 

@@ -162,6 +162,8 @@ static int build_scene(win *g)
      * hovering and picking too */
     const unsigned fluid_layers = PL_LAYER_MESH | PL_LAYER_PRESSURE | PL_LAYER_ISOLINES |
                                   PL_LAYER_VELOCITY;
+    if ((g->sim.ropt.layers & fluid_layers) && pl_world_prepare(g->sim.w) != PL_OK)
+        snprintf(g->sim.error, sizeof g->sim.error, "%s", pl_world_last_error(g->sim.w));
     int rc = pl_render_scene_capture(&g->rs, g->sim.w);
     g->rs_fluid = 0;
     if (rc == 0 && (g->sim.ropt.layers & fluid_layers)) {
@@ -631,7 +633,7 @@ int pl_window_main(const pl_opts *o)
         if (build_scene(g) != 0) break;
         if (g->show_hud) {
             pl_render_scene_stress(&g->rs);
-            if (!g->rs_fluid && pl_world_fluid_node_count(g->sim.w) > 0)
+            if (!g->rs_fluid && pl_world_prepare(g->sim.w) == PL_OK && pl_world_fluid_node_count(g->sim.w) > 0)
                 pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
             g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
         }

@@ -60,9 +60,12 @@ for c = 1, NCOL do
   packing.rain(w, { lo = { x0 + 0.001, 0.002 }, hi = { x0 + W - 0.001, 0.25 }, radii = { 0.0020, 0.0026 },
                     count = 130, material = sand, seed = 4 + c })
   col.last = w:body_count()
-  -- the piston waits above the column (fixed until T_SEAT)
+  -- the piston waits above the column (fixed until T_SEAT). An oedometer's piston is guided:
+  -- it moves only vertically under the load and never turns (guide = {0, 1}: the guide takes
+  -- the side force and the moment). Free, it tilted 3-5 degrees on the uneven column and a
+  -- corner entered a side wall by up to 0.8 mm (issue 13 item 11).
   col.piston = w:rectangle { center = { x0 + W / 2, 0.2 }, width = W - 0.0006, height = PH, material = pmat,
-                             fixed = true }
+                             fixed = true, guide = { 0, 1 } }
   w:fluid_quad { corners = { { x0, 0 }, { x0 + W, 0 }, { x0 + W, HMESH }, { x0, HMESH } }, ndivx = 4, ndivy = 13 }
   -- drained at the floor only: pressure head HMESH there (still water up to the mesh top)
   w:fluid_bc { from = { x0, 0 }, to = { x0 + W, 0 }, head = HMESH }

@@ -68,6 +68,7 @@ int main(int argc, char **argv) {
         return 1;
     }
     double t_first = now() - t0;
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
     pl_fluid_stats s0, s1;
     pl_world_fluid_stats(w, &s0);
@@ -86,6 +87,7 @@ int main(int argc, char **argv) {
         double b = now();
         pl_vec2 F;
         double M;
+        pl_world_prepare(w); /* queries read only: build first */
         for (int k = 0; k < grains; k++) pl_world_fluid_body_force(w, k, &F, &M);
         double c = now();
         t_forces += c - b;
@@ -124,6 +126,7 @@ int main(int argc, char **argv) {
     pl_world_set_flag(w, "FLUID_STORAGE", 1);
     pl_world_set_flag(w, "FLUID_DRAG", 0);
     a = now();
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_node_count(w); /* mesh */
     double t_mesh = now() - a;
     pl_world_fluid_stats(w, &s0);

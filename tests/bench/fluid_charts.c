@@ -23,10 +23,13 @@ static pl_world *rod(int n, int method) { return wave_rod(n, method, 0); }
 
 /* Profile along y = 0: nodes on the bottom edge, sorted by x (they are created in order). */
 static int profile(pl_world *w, double *x, double *h, int cap) {
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * nn);
     double *hd = malloc(sizeof(double) * nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_nodes(w, xy, nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_node_field(w, PL_FLUID_HEAD, hd, nn);
     int m = 0;
     for (int i = 0; i < nn && m < cap; i++)
@@ -37,10 +40,13 @@ static int profile(pl_world *w, double *x, double *h, int cap) {
 }
 
 static double max_error(pl_world *w, double t) {
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * nn);
     double *hd = malloc(sizeof(double) * nn), e = 0;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_nodes(w, xy, nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_node_field(w, PL_FLUID_HEAD, hd, nn);
     for (int i = 0; i < nn; i++) e = fmax(e, fabs(hd[i] - erfc(xy[i].x / (2 * sqrt(t)))));
     free(xy);
@@ -201,8 +207,10 @@ static void porosity_cost(const char *dir) {
             pl_world_add_body(w, &b);
         }
     pl_world_fluid_solve_static(w);
+    pl_world_prepare(w); /* queries read only: build first */
     int ne = pl_world_fluid_triangle_count(w);
     double *ex = malloc(sizeof(double) * ne), *px = malloc(sizeof(double) * ne);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_element_field(w, PL_FLUID_SOLID_AREA, ex, ne);
     pl_fluid_stats s0, s1;
     double t_exact = 1e300;
@@ -224,6 +232,7 @@ static void porosity_cost(const char *dir) {
             pl_world_fluid_stats(w, &s1);
             best = fmin(best, s1.t_porosity - s0.t_porosity);
         }
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_copy_element_field(w, PL_FLUID_SOLID_AREA, px, ne);
         double e = 0, A = 0.96 / ne;
         for (int i = 0; i < ne; i++) e += fabs(px[i] - ex[i]);

@@ -35,7 +35,7 @@ endforeach()
 
 # Bad input: one clear message with file:line, the argument and the valid range; exit 1.
 pl_cli_test(bad_negative_radius RC 1 ARGS run ${PL_BAD}/neg_radius.lua --quiet
-  MATCH "^porelab: tests/cli/bad/neg_radius.lua:4: disc: radius must be > 0 \\(got -1\\)\n$")
+  MATCH "^porelab: tests/cli/bad/neg_radius.lua:4: disc: radius must be a finite number in \\(0, 1000000\] m \\(got -1\\)\n$")
 pl_cli_test(bad_unknown_material RC 1 ARGS run ${PL_BAD}/unknown_material.lua --quiet
   MATCH "unknown_material.lua:4: disc: unknown material 'snad' \\(known: sand\\)")
 pl_cli_test(bad_wrong_type RC 1 ARGS run ${PL_BAD}/wrong_type.lua --quiet
@@ -171,6 +171,12 @@ pl_cli_test(bad_shake_ramp RC 1 ARGS run ${PL_BAD}/bad_shake_ramp.lua --quiet
 
 # Packing helpers: fill to a porosity and a count, size distributions, servo compression.
 pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --out ${PL_CLI_OUT}/packing)
+# Numeric fields out of their documented ranges are refused with file:line, field and range.
+pl_cli_test(field_ranges RC 0 ARGS run tests/cli/lua/ranges.lua --quiet --out ${PL_CLI_OUT}/field_ranges
+  MATCH "field ranges: 22 out-of-range inputs refused")
+# MIMES listings: the pair parameters of Appendix C.2 survive its three apply_* commands.
+pl_cli_test(mimes_pairs RC 0 ARGS run tests/cli/lua/mimes_pairs.lua --quiet --out ${PL_CLI_OUT}/mimes_pairs
+  MATCH "mimes pairs: k_N 400000")
 # Scene parameters in the result table (the live window's sliders): accepted and checked.
 pl_cli_test(scene_params RC 0 ARGS run tests/cli/lua/params.lua --quiet --out ${PL_CLI_OUT}/params
   EXPECT_FILE ${PL_CLI_OUT}/params/frame_000001.png)
@@ -196,3 +202,6 @@ pl_cli_test(bad_chart RC 1 ARGS run ${PL_BAD}/bad_chart.lua --quiet --out ${PL_C
 pl_cli_test(sandbox_chart_outside RC 1
   ARGS run ${PL_BAD}/chart_outside.lua --quiet --out ${PL_CLI_OUT}/chart_outside
   MATCH "chart_outside.lua:2: chart: writing '../../escape.png' is not allowed")
+
+# Faults: kills, failed writes, hangs turned into range errors (tests/cli/faults/).
+include(${PL_CLI_DIR}/faults/tests.cmake)

@@ -94,6 +94,7 @@ static double head_at(pl_world *w, double y) {
     int n = 0;
     for (int k = 0; k < 25; k++) {
         double h;
+        pl_world_prepare(w); /* queries read only: build first */
         if (pl_world_fluid_pressure_at(w, (pl_vec2){W * (k + 0.5) / 25, y}, NULL, &h)) { s += h; n++; }
     }
     return s / n;

@@ -70,6 +70,7 @@ static int vertical_shaking(void) {
         double p = 0, ref = 0;
         for (int j = 1; j <= 4; j++) {
             const double d = H * j / 5;
+            pl_world_prepare(w); /* queries read only: build first */
             pl_world_fluid_pressure_at(w, (pl_vec2){0.037, H - d}, &p, NULL);
             ref = RHO * (G + ay) * d;
             const double e = fabs(p - ref) / (RHO * G * d);
@@ -84,6 +85,7 @@ static int vertical_shaking(void) {
     ENSURE(pl_world_fluid_set_frame(w, -1) == PL_OK);
     ENSURE(pl_world_step(w, 1) == PL_OK);
     double p;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_pressure_at(w, (pl_vec2){0.05, H / 2}, &p, NULL);
     ENSURE_NEAR(p, RHO * G * H / 2, 1e-9 * RHO * G * H);
     pl_world_destroy(&w);
@@ -111,11 +113,14 @@ static int horizontal_shaking(void) {
         ENSURE(pl_world_step(w, 170) == PL_OK);
         const double t = pl_world_time(w), ax = acc(A, F, t);
         double p1, p2;
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_pressure_at(w, (pl_vec2){0.02, 0.12}, &p1, NULL);
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_pressure_at(w, (pl_vec2){0.08, 0.12}, &p2, NULL);
         const double dpdx = (p2 - p1) / 0.06;
         pl_vec2 Fd;
         double M;
+        pl_world_prepare(w); /* queries read only: build first */
         ENSURE(pl_world_fluid_body_force(w, disc, &Fd, &M) == PL_OK);
         const double Fref = RHO * ax * M_PI * r * r;
         fprintf(stderr, "  t = %.4f s: a_x = %+.3f m/s^2: dp/dx = %+.3f Pa/m (-rho a_x = %+.3f); disc F_x = %+.5f N/m "
@@ -129,13 +134,17 @@ static int horizontal_shaking(void) {
         /* the Darcy flux reported (element field, drawn and written to VTK) is relative to the
            table: the water deep in the column moves with it, so q_x ~ 0 there, while the raw
            -k dh/dx is k a_x / g */
+        pl_world_prepare(w); /* queries read only: build first */
         const int nt = pl_world_fluid_triangle_count(w), nn = pl_world_fluid_node_count(w);
         static double vx[4000];
         static int tri[12000];
         static pl_vec2 xy[4000];
         ENSURE(nt <= 4000 && nn <= 4000);
+        pl_world_prepare(w); /* queries read only: build first */
         ENSURE(pl_world_fluid_copy_element_field(w, PL_FLUID_VELOCITY_X, vx, nt) == nt);
+        pl_world_prepare(w); /* queries read only: build first */
         ENSURE(pl_world_fluid_copy_triangles(w, tri, nt) == nt);
+        pl_world_prepare(w); /* queries read only: build first */
         ENSURE(pl_world_fluid_copy_nodes(w, xy, nn) == nn);
         double qmax = 0;
         for (int e = 0; e < nt; e++) {

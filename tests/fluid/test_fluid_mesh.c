@@ -50,10 +50,13 @@ static double quad_area(const quad *q) {
 
 /* Returns the number of defects found; prints them. */
 static int check_conforming(pl_world *w, const quad *q, int nq, double *area_out) {
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * nn);
     int *t = malloc(sizeof(int) * 3 * ne);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_nodes(w, xy, nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_triangles(w, t, ne);
     double scale = 0, area = 0;
     for (int i = 0; i < nn; i++) scale = fmax(scale, fmax(fabs(xy[i].x), fabs(xy[i].y)));
@@ -109,13 +112,16 @@ static int test_single_quad(void) {
     quad q = {{{0, 0}, {3, 0.5}, {2.5, 2}, {-0.5, 1.5}}, 5, 3};
     pl_world *w = make(&q, 1);
     ENSURE(w);
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_node_count(w) == 6 * 4 + 5 * 3);
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_triangle_count(w) == 4 * 5 * 3);
     double area;
     ENSURE(check_conforming(w, &q, 1, &area) == 0);
     ENSURE_REL(area, quad_area(&q), 1e-12);
     /* centre node of the first cell = average of its four corners (bilinear map at the cell centre) */
     pl_vec2 xy[64];
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_nodes(w, xy, 64);
     pl_vec2 c = xy[24]; /* first centre node follows the 24 corner nodes */
     pl_vec2 avg = {(xy[0].x + xy[1].x + xy[6].x + xy[7].x) / 4, (xy[0].y + xy[1].y + xy[6].y + xy[7].y) / 4};
@@ -133,6 +139,7 @@ static int test_dam_quads(void) {
     pl_world *w = make(q, 3);
     ENSURE(w);
     double area;
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w);
     ENSURE(nn > 0);
     ENSURE(check_conforming(w, q, 3, &area) == 0);
@@ -141,6 +148,7 @@ static int test_dam_quads(void) {
        shared, B's face nodes at y = 62.5, 75, 87.5, 100 hang on A's and C's faces and are
        resolved by re-meshing, which adds no node */
     ENSURE(nn == 3 * 41 - 2);
+    pl_world_prepare(w); /* queries read only: build first */
     fprintf(stderr, "  dam mesh: %d nodes, %d triangles\n", nn, pl_world_fluid_triangle_count(w));
     pl_world_destroy(&w);
     return 0;
@@ -178,7 +186,7 @@ static int expect_error(const quad *q, int nq, const char *needle) {
         d.ndivy = q[k].ny;
         if (pl_world_add_fluid_quad(w, &d) < 0) fail_at = k;
     }
-    if (fail_at < 0 && pl_world_fluid_node_count(w) > 0) {
+    if (fail_at < 0 && pl_world_prepare(w) == PL_OK && pl_world_fluid_node_count(w) > 0) {
         fprintf(stderr, "expected an error containing '%s'\n", needle);
         pl_world_destroy(&w);
         return 1;

@@ -124,8 +124,10 @@ static pl_world *packing(void) {
 static int test_exact_vs_pixels(void) {
     pl_world *w = packing();
     ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    pl_world_prepare(w); /* queries read only: build first */
     int ne = pl_world_fluid_triangle_count(w);
     double *exact = malloc(sizeof(double) * ne), *pix = malloc(sizeof(double) * ne);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_element_field(w, PL_FLUID_SOLID_AREA, exact, ne);
     double total = 0, grains = 0;
     for (int e = 0; e < ne; e++) total += exact[e];
@@ -145,6 +147,7 @@ static int test_exact_vs_pixels(void) {
         double t0 = f->stats.t_porosity;
         ENSURE(pl_world_fluid_advance(w, 1e-3) == PL_OK);
         double t1 = f->stats.t_porosity - t0;
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_copy_element_field(w, PL_FLUID_SOLID_AREA, pix, ne);
         double err = 0;
         for (int e = 0; e < ne; e++) err += fabs(pix[e] - exact[e]);
@@ -161,6 +164,7 @@ static int test_exact_vs_pixels(void) {
             pl_world_body_count(w));
     /* permeability: every element's conductivity lies within [LOW, HIGH] and falls with solids */
     double *k = malloc(sizeof(double) * ne);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_element_field(w, PL_FLUID_PERM_X, k, ne);
     for (int e = 0; e < ne; e++) ENSURE(k[e] >= 0.001 * (1 - 1e-12) && k[e] <= 5.0 * (1 + 1e-12));
     free(k);

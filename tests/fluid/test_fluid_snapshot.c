@@ -147,6 +147,7 @@ static int g_method = 0, g_perm2 = 0;
 
 /* FLUID_PERM 2: per-element conductivities from the scene, 1e-3 m/s x scale x a pattern */
 static void set_user_perm(pl_world *w, double scale) {
+    pl_world_prepare(w); /* queries read only: build first */
     int ne = pl_world_fluid_triangle_count(w);
     double *k = malloc(sizeof(double) * (size_t)ne);
     for (int e = 0; e < ne; e++) k[e] = 1e-3 * scale * (1.0 + 0.5 * sin(0.7 * e));
@@ -226,6 +227,7 @@ static int check_plan(const char *name, const plan *p) {
     if (g_perm2) set_user_perm(w, 3.0);
     ENSURE(pl_world_step(w, 11) == PL_OK);
     double pr, hd;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_pressure_at(w, (pl_vec2){0.5 * W, 0.5 * H}, &pr, &hd);
     ENSURE(pl_world_restore(w, s) == PL_OK);
     ENSURE(pl_world_state_hash(w) == h0);
@@ -304,6 +306,7 @@ static int fresh_world_restores(void) {
     plan a = {quicksand, 0, 120, 50};
     if (check_plan("fresh world", &a)) return 1;
     pl_world *w = quicksand();
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_node_count(w) > 0); /* query: static solve before the first step */
     pl_snapshot *s = pl_world_snapshot(w);
     ENSURE(s);
@@ -334,17 +337,20 @@ static int dirty_inputs_restore(void) {
     q.ndivy = 5;
     ENSURE(pl_world_add_fluid_quad(w, &q) >= 0);
     ENSURE(pl_world_step(w, 30) == PL_OK);
+    pl_world_prepare(w); /* queries read only: build first */
     int nn2 = pl_world_fluid_node_count(w);
     ENSURE(pl_world_restore(w, s) == PL_OK);
     ENSURE(pl_world_fluid_quad_count(w) == 1);
     ENSURE(pl_world_step(w, 100) == PL_OK);
     ENSURE(pl_world_state_hash(w) == h1);
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_node_count(w) < nn2);
     pl_snapshot_destroy(&s);
     /* heads changed and applied by a query before the snapshot: the next step still restarts
        the fluid after the restore */
     quicksand_bcs(w, 0.009);
     double pr, hd;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_pressure_at(w, (pl_vec2){0.5 * W, 0.5 * H}, &pr, &hd);
     s = pl_world_snapshot(w);
     ENSURE(s);
@@ -392,19 +398,27 @@ static int snapshot_before_fluid(void) {
 
 /* Everything a renderer or a scene hook may query, as a frame does. */
 static void query_all(pl_world *w) {
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
     double *v = malloc(sizeof(double) * (size_t)(nn > ne ? nn : ne) + 1);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * (size_t)nn + 1);
     int *tri = malloc(sizeof(int) * 3 * (size_t)ne + 1);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_nodes(w, xy, nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_triangles(w, tri, ne);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_node_field(w, PL_FLUID_EXCESS_PRESSURE, v, nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_element_field(w, PL_FLUID_POROSITY, v, ne);
     double p, h;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_pressure_at(w, (pl_vec2){0.5 * W, 0.5 * H}, &p, &h);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_line_inflow(w, 0);
     pl_vec2 F;
     double M;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_body_force(w, pl_world_body_count(w) - 1, &F, &M);
     free(v);
     free(xy);

@@ -52,8 +52,10 @@ static int dam(int refine, double gy, double *q_in, double *q_out, double *hmin,
     *q_in = pl_world_fluid_line_inflow(w, l0);
     *q_out = -pl_world_fluid_line_inflow(w, l1);
     /* total heads relative to the outlet's (300 with gravity: h = psi + y; 0 without) */
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w);
     double *h = malloc(sizeof(double) * nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_node_field(w, PL_FLUID_HEAD, h, nn);
     const double h_out = gy != 0 ? 300 : 0;
     *hmin = 1e300;
@@ -120,19 +122,24 @@ static pl_world *still_water(double top, int nx, int ny, double rho) {
 static int test_hydrostatic(void) {
     pl_world *w = still_water(300, 4, 4, 1.0);
     ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
     double *h = malloc(sizeof(double) * (nn > ne ? nn : ne));
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_node_field(w, PL_FLUID_HEAD, h, nn);
     for (int i = 0; i < nn; i++) ENSURE_NEAR(h[i], 300, 1e-10);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_element_field(w, PL_FLUID_VELOCITY_Y, h, ne);
     for (int e = 0; e < ne; e++) ENSURE_NEAR(h[e], 0, 1e-10);
     for (int k = 0; k < 20; k++) {
         pl_vec2 p = {100 + 200 * ((k * 37) % 101) / 101.0, 100 + 200 * ((k * 53) % 97) / 97.0};
         double pr;
+        pl_world_prepare(w); /* queries read only: build first */
         ENSURE(pl_world_fluid_pressure_at(w, p, &pr, NULL) == 1);
         ENSURE_NEAR(pr, 9.81 * (300 - p.y), 1e-9 * 9.81 * 200);
     }
     double pr;
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_pressure_at(w, (pl_vec2){50, 50}, &pr, NULL) == 0);
     ENSURE(pr == 0);
     free(h);
@@ -193,11 +200,13 @@ static int test_archimedes(void) {
     double A = poly_area(hex, 6, &c);
     pl_vec2 F;
     double M;
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_body_force(w, b, &F, &M) == PL_OK);
     fprintf(stderr, "  hexagon: F = (%.3e, %.15g), rho g A = %.15g, M = %.3e\n", F.x, F.y, rho * g * A, M);
     ENSURE_REL(F.y, rho * g * A, 1e-10);
     ENSURE_NEAR(F.x, 0, 1e-10 * rho * g * A);
     ENSURE_NEAR(M, 0, 1e-10 * rho * g * A * 40);
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_body_force(w, d, &F, &M) == PL_OK);
     double Ad = 3.141592653589793 * 23.7 * 23.7;
     fprintf(stderr, "  disc: F = (%.3e, %.15g), rho g pi r^2 = %.15g\n", F.x, F.y, rho * g * Ad);
@@ -211,10 +220,12 @@ static int test_archimedes(void) {
     for (int k = 0; k < 8; k++) oct[k] = (pl_vec2){200 + 70 * cos(0.2 + k * 0.785398), 210 + 70 * sin(0.2 + k * 0.785398)};
     b = add_poly(w, oct, 8);
     ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_body_force(w, d, &F, &M) == PL_OK);
     Ad = 3.141592653589793 * 61.3 * 61.3;
     fprintf(stderr, "  large disc on a 60 x 60 mesh: F_y = %.15g, rho g pi r^2 = %.15g\n", F.y, rho * g * Ad);
     ENSURE_REL(F.y, rho * g * Ad, 1e-10);
+    pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_body_force(w, b, &F, &M) == PL_OK);
     A = poly_area(oct, 8, &c);
     ENSURE_REL(F.y, rho * g * A, 1e-10);
@@ -259,12 +270,14 @@ static int test_partial_submersion(void) {
     poly_area(sq, 4, &c);
     pl_vec2 F;
     double M;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_body_force(w, b, &F, &M);
     fprintf(stderr, "  tilted square: F = (%.3e, %.12g) expected (0, %.12g); M = %.10g expected %.10g\n", F.x, F.y,
             rho * g * Aw, M, (cw.x - c.x) * rho * g * Aw);
     ENSURE_REL(F.y, rho * g * Aw, 1e-9);
     ENSURE_NEAR(F.x, 0, 1e-9 * rho * g * Aw);
     ENSURE_REL(M, (cw.x - c.x) * rho * g * Aw, 1e-8);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_body_force(w, d, &F, &M);
     double dd = yc - 300, r = 20;
     double Aseg = r * r * acos(dd / r) - dd * sqrt(r * r - dd * dd);
@@ -280,14 +293,17 @@ static int test_partial_submersion(void) {
     int dd2 = add_disc(w, (pl_vec2){150.0, 320.0}, rs); /* fully above the water */
     int dw = add_disc(w, (pl_vec2){118.0, 200.3}, rs);  /* fully below, inside one element */
     ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_body_force(w, ds, &F, &M);
     dd = ys - 300;
     Aseg = rs * rs * acos(dd / rs) - dd * sqrt(rs * rs - dd * dd);
     fprintf(stderr, "  small disc across the water table: F_y = %.12g expected %.12g\n", F.y, rho * g * Aseg);
     ENSURE_REL(F.y, rho * g * Aseg, 1e-9);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_body_force(w, dd2, &dry, &M);
     /* dry: no pressure; only the drag of the round-off head gradient (1e-15) may remain */
     ENSURE_NEAR(hypot(dry.x, dry.y), 0, 1e-10 * rho * g * 3.141592653589793 * rs * rs);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_body_force(w, dw, &F, &M);
     ENSURE_REL(F.y, rho * g * 3.141592653589793 * rs * rs, 1e-10);
     pl_world_destroy(&w);
@@ -315,15 +331,19 @@ static int test_flux_and_anisotropy(void) {
         pl_world_set_flag(w, "FLUID_PERM", 0);
         pl_world_set_flag(w, "FLUID_PERM_HIGH", 0.5);
         ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+        pl_world_prepare(w); /* queries read only: build first */
         double out = -pl_world_fluid_line_inflow(w, top);
         double h0;
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_pressure_at(w, (pl_vec2){1, 0}, NULL, &h0);
         fprintf(stderr, "  inflow 0.01 m/s x 2 m: outflow %.15g m^2/s; floor head %.12g (expected %.12g), D_y/D_x = %g\n", out,
                 h0, 0.01 * 1 / (0.5 * aniso), aniso);
         ENSURE_REL(out, 0.02, 1e-10);
         ENSURE_REL(h0, 0.01 / (0.5 * aniso), 1e-10);
+        pl_world_prepare(w); /* queries read only: build first */
         int ne = pl_world_fluid_triangle_count(w);
         double *vy = malloc(sizeof(double) * ne);
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_copy_element_field(w, PL_FLUID_VELOCITY_Y, vy, ne);
         for (int e = 0; e < ne; e++) ENSURE_REL(vy[e], 0.01, 1e-9); /* Darcy velocity = inflow */
         free(vy);
@@ -344,17 +364,22 @@ static int test_user_permeability(void) {
     int left = pl_world_add_fluid_bc(w, (pl_vec2){0, 0}, (pl_vec2){0, 1}, 1);
     pl_world_add_fluid_bc(w, (pl_vec2){1, 0}, (pl_vec2){1, 1}, 0);
     pl_world_set_flag(w, "FLUID_PERM", 2);
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * nn);
     int *t = malloc(sizeof(int) * 3 * ne);
     double *k = malloc(sizeof(double) * ne);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_nodes(w, xy, nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_triangles(w, t, ne);
     for (int e = 0; e < ne; e++) k[e] = (xy[t[3 * e]].x + xy[t[3 * e + 1]].x + xy[t[3 * e + 2]].x) / 3 < 0.5 ? 2.0 : 0.5;
     ENSURE(pl_world_fluid_solve_static(w) != PL_OK); /* values not given yet: refused */
     ENSURE(pl_world_fluid_set_element_permeability(w, k, ne) == PL_OK);
     ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    pl_world_prepare(w); /* queries read only: build first */
     double q = pl_world_fluid_line_inflow(w, left), hm;
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_pressure_at(w, (pl_vec2){0.5, 0.5}, NULL, &hm);
     fprintf(stderr, "  layers in series: flow %.15g (expected 0.8), head at the interface %.12g (expected 1 - q L1 / K1 = 0.8)\n", q, hm);
     ENSURE_REL(q, 0.8, 1e-10);
@@ -370,6 +395,7 @@ static int test_user_permeability(void) {
 static int test_output_files(void) {
     pl_world *w = still_water(300, 3, 2, 1000);
     ENSURE(pl_world_fluid_solve_static(w) == PL_OK);
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
     ENSURE(pl_world_fluid_write_vtu(w, "fluid_test.vtu") == PL_OK);
     FILE *f = fopen("fluid_test.vtu", "r");

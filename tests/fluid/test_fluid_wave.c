@@ -33,10 +33,13 @@ static double series(double x, double t) {
 }
 
 static double max_error(pl_world *w, double t, int use_series) {
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * nn);
     double *h = malloc(sizeof(double) * nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_nodes(w, xy, nn);
+    pl_world_prepare(w); /* queries read only: build first */
     pl_world_fluid_copy_node_field(w, PL_FLUID_HEAD, h, nn);
     double err = 0;
     for (int i = 0; i < nn; i++) {

@@ -24,12 +24,15 @@ enum { MAXN = 64 + 1 };
 
 /* Head along the bottom edge y = 0 (nodes created in order of x). */
 static int profile(pl_world *w, double *x, double *h) {
+    pl_world_prepare(w); /* queries read only: build first */
     int nn = pl_world_fluid_node_count(w);
     pl_vec2 *xy = malloc(sizeof(pl_vec2) * (size_t)nn);
     double *hd = malloc(sizeof(double) * (size_t)nn);
     int m = 0;
     if (xy && hd) {
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_copy_nodes(w, xy, nn);
+        pl_world_prepare(w); /* queries read only: build first */
         pl_world_fluid_copy_node_field(w, PL_FLUID_HEAD, hd, nn);
         for (int i = 0; i < nn && m < MAXN; i++)
             if (fabs(xy[i].y) < 1e-12) {

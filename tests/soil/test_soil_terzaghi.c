@@ -84,6 +84,7 @@ static double run(int cons, int verbose, double *iso_err) {
             double rel = fabs(U - Ua) / Ua;
             if (rel > worst) worst = rel;
             double p;
+            pl_world_prepare(w); /* queries read only: build first */
             pl_world_fluid_pressure_at(w, (pl_vec2){WD / 2, H / 2}, &p, NULL);
             double ia = u_series(0.5, Tv);
             double ie = fabs(p / u0 - ia);

@@ -119,6 +119,7 @@ static int run(int cons, double D, double Kf, double dt, int drained, result *r,
         double p;
         for (int j = 0; j < 5 && drained; j++) {
             pl_vec2 x = {BW * (j + 0.5) / 5, 0.001 + j * 0.004};
+            pl_world_prepare(w); /* queries read only: build first */
             pl_world_fluid_pressure_at(w, x, &p, NULL);
             double dev = fabs(p - 1000 * 9.81 * (ymesh - x.y)) / pf_h;
             if (dev > r->hyd_dev) r->hyd_dev = dev;

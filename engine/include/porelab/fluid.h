@@ -71,13 +71,17 @@ pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, 
 
 /* ---------------------------------------------------------------- queries */
 
-/// Number of mesh nodes / triangles (meshes on demand; 0 without a fluid model).
-int pl_world_fluid_node_count(pl_world *w);
-int pl_world_fluid_triangle_count(pl_world *w);
+/// Queries are read-only: they read the field as the last prepare or step left it. Call
+/// pl_world_prepare (porelab/world.h) after changing quads or lines and before reading a field
+/// at t = 0; before that they report an empty mesh.
+///
+/// Number of mesh nodes / triangles (0 without a fluid model or before it is prepared).
+int pl_world_fluid_node_count(const pl_world *w);
+int pl_world_fluid_triangle_count(const pl_world *w);
 /// Copies node coordinates (m); returns the number written.
-int pl_world_fluid_copy_nodes(pl_world *w, pl_vec2 *out, int cap);
+int pl_world_fluid_copy_nodes(const pl_world *w, pl_vec2 *out, int cap);
 /// Copies triangles as 3 node indices each, counter-clockwise; cap counts triangles.
-int pl_world_fluid_copy_triangles(pl_world *w, int *out, int cap);
+int pl_world_fluid_copy_triangles(const pl_world *w, int *out, int cap);
 
 typedef enum pl_fluid_node_field {
     PL_FLUID_HEAD = 0,           ///< total head h, m
@@ -97,19 +101,19 @@ typedef enum pl_fluid_element_field {
 } pl_fluid_element_field;
 
 /// Copies a per-node field; returns the number written.
-int pl_world_fluid_copy_node_field(pl_world *w, pl_fluid_node_field field, double *out, int cap);
+int pl_world_fluid_copy_node_field(const pl_world *w, pl_fluid_node_field field, double *out, int cap);
 /// Copies a per-element field; returns the number written.
-int pl_world_fluid_copy_element_field(pl_world *w, pl_fluid_element_field field, double *out, int cap);
+int pl_world_fluid_copy_element_field(const pl_world *w, pl_fluid_element_field field, double *out, int cap);
 /// Pressure (Pa, gauge) and total head (m) at a point (eqs. 3.21-3.23). Returns 1 inside the
 /// mesh, 0 outside (then pressure = 0 and head = NaN).
-int pl_world_fluid_pressure_at(pl_world *w, pl_vec2 p, double *pressure, double *head);
+int pl_world_fluid_pressure_at(const pl_world *w, pl_vec2 p, double *pressure, double *head);
 /// Net flow (m^2/s per unit thickness) entering the domain through the nodes of head line
 /// `line` (negative when leaving), from the reactions K h - f of the assembled system (the
 /// steady balance: in transient runs the storage term is not included).
-double pl_world_fluid_line_inflow(pl_world *w, int line);
+double pl_world_fluid_line_inflow(const pl_world *w, int line);
 /// Fluid force (N per m thickness) and moment about the centroid (N m) on one body for the
 /// current field: pressure on its outline plus interphase drag (when on).
-pl_status pl_world_fluid_body_force(pl_world *w, int body, pl_vec2 *force, double *moment);
+pl_status pl_world_fluid_body_force(const pl_world *w, int body, pl_vec2 *force, double *moment);
 
 /// Counters and timings (s, accumulated since the model was created).
 typedef struct pl_fluid_stats {

@@ -87,7 +87,16 @@ typedef struct pl_pair_def {
     double kn, ks, friction, cohesion, cn, cs, restitution, rolling;
 } pl_pair_def;
 pl_pair_def pl_default_pair_def(void); ///< all fields -1 (keep defaults)
+/// Replaces the whole override of the pair: fields < 0 in def go back to the combined default
+/// (to change one field and keep the others, read the override with pl_world_pair_override,
+/// change it and set it back; the Lua world:pair merges this way).
 pl_status pl_world_set_pair(pl_world *w, int material_a, int material_b, const pl_pair_def *def);
+/// The override stored for the pair (fields -1 where none was given).
+pl_status pl_world_pair_override(pl_world *w, int material_a, int material_b, pl_pair_def *out);
+/// The parameters contacts of the pair use, after the combination rules and the override:
+/// kn, ks, friction, cohesion, rolling, the dashpots cn, cs (used when restitution < 0) and
+/// restitution (-1 when the pair uses dashpots).
+pl_status pl_world_pair_params(pl_world *w, int material_a, int material_b, pl_pair_def *out);
 
 /* ----------------------------------------------------------------- bodies */
 
@@ -116,6 +125,10 @@ typedef struct pl_body_def {
     pl_vec2 velocity;       ///< initial velocity, m/s
     double omega;           ///< initial angular velocity, rad/s (counter-clockwise positive)
     int user_id;            ///< free id kept for the scene (MIMES ids); default -1
+    int fixed_rotation;     ///< 1: a dynamic body that moves but never turns (a guided piston:
+                            ///< the guide takes the moment); its angle stays as given
+    pl_vec2 guide;          ///< dynamic body: moves only along this direction (normalised; a
+                            ///< guided piston, which also never turns); {0, 0}: free
 } pl_body_def;
 
 #define PL_MAX_POLY_VERTICES 64
@@ -161,6 +174,13 @@ pl_status pl_world_set_body_velocity(pl_world *w, int body, pl_vec2 v, double om
 pl_status pl_world_prescribe_velocity(pl_world *w, int body, pl_vec2 v, double omega);
 /// Changes the motion type (fix or release a body).
 pl_status pl_world_set_body_motion(pl_world *w, int body, pl_motion_type motion);
+/// Guided rotation: on = 1 keeps the body's angle fixed (omega 0) whatever its motion type's
+/// forces; the moments on it are taken by the guide and do no work. 0 frees it again.
+pl_status pl_world_set_body_fixed_rotation(pl_world *w, int body, int on);
+/// Linear guide: the body moves only along dir (its velocity across it is held at zero, the
+/// guide takes the force) and never turns; dir = {0, 0} removes the guide (the rotation stays
+/// fixed until pl_world_set_body_fixed_rotation(w, body, 0)).
+pl_status pl_world_set_body_guide(pl_world *w, int body, pl_vec2 dir);
 /// Adds a constant external force (N) and moment (N m) acting every step until changed.
 pl_status pl_world_set_body_load(pl_world *w, int body, pl_vec2 force, double moment);
 /// Prescribed sinusoidal motion (shaking table): the body's position follows
@@ -228,6 +248,21 @@ pl_dt_report pl_world_dt_report(pl_world *w);
 
 /// Advances n steps. Stops early and returns PL_ERR_UNSTABLE (message in last_error) when a
 /// guard fires; the world then stays at the last good state for queries.
+/// Builds what the queries read without advancing time: every attached model meshes, applies
+/// changed boundary conditions and computes its initial field (with FIRST_STEP_STATIC, the
+/// static solution the first step will use). Queries never build anything themselves; call
+/// this after changing a model's input and before reading its fields (a frame at t = 0).
+/// Stepping prepares by itself. Preparing does not change the results of later steps.
+pl_status pl_world_prepare(pl_world *w);
+
+/// Models attached to the world (world/models.c registry), in attachment order: their count,
+/// short name ("darcy", "hydrostatic"), one-line description, and the CPU seconds they spent so
+/// far with the number of their updates (for `porelab info`).
+int pl_world_model_count(const pl_world *w);
+const char *pl_world_model_name(const pl_world *w, int k);
+const char *pl_world_model_label(const pl_world *w, int k);
+double pl_world_model_cost(const pl_world *w, int k, long *calls);
+
 pl_status pl_world_step(pl_world *w, int n);
 double pl_world_time(const pl_world *w);
 int64_t pl_world_step_count(const pl_world *w);

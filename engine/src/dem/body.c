@@ -78,10 +78,37 @@ static void set_mass_properties(pl_world *w, int i, double density) {
     }
     const int dyn = w->motion[i] == PL_MOTION_DYNAMIC && w->mass[i] > 0;
     w->inv_mass[i] = dyn ? 1.0 / w->mass[i] : 0;
-    w->inv_inertia[i] = dyn && w->inertia[i] > 0 ? 1.0 / w->inertia[i] : 0;
+    /* a guided (fixed-rotation) body turns as if its inertia were infinite */
+    w->inv_inertia[i] = dyn && w->inertia[i] > 0 && !w->law[i].fixed_rotation ? 1.0 / w->inertia[i] : 0;
 }
 
 static int finite2(pl_vec2 v) { return isfinite(v.x) && isfinite(v.y); }
+
+/* Clears a body's motion law for a new one, keeping its guided rotation. */
+static void reset_law(pl_world *w, int i) {
+    const int fixed_rotation = w->law[i].fixed_rotation;
+    const pl_vec2 guide = w->law[i].guide;
+    memset(&w->law[i], 0, sizeof w->law[i]);
+    w->law[i].fixed_rotation = fixed_rotation;
+    w->law[i].guide = guide;
+}
+
+/* Sets the linear guide (unit direction, or {0, 0}) and projects the velocity onto it. */
+static pl_status set_guide(pl_world *w, int i, pl_vec2 d) {
+    if (!finite2(d)) return pl__error(w, PL_ERR_ARG, "guide: the direction must be finite");
+    const double l = sqrt(d.x * d.x + d.y * d.y);
+    if (l == 0) {
+        w->law[i].guide = (pl_vec2){0, 0};
+        return PL_OK;
+    }
+    const pl_vec2 u = {d.x / l, d.y / l};
+    w->law[i].guide = u;
+    w->law[i].fixed_rotation = 1;
+    const double s = w->vel[i].x * u.x + w->vel[i].y * u.y;
+    w->vel[i] = (pl_vec2){s * u.x, s * u.y};
+    w->omega[i] = 0;
+    return PL_OK;
+}
 
 int pl_world_add_body(pl_world *w, const pl_body_def *d) {
     if (!d) return pl__error(w, PL_ERR_ARG, "body: no definition");
@@ -90,7 +117,8 @@ int pl_world_add_body(pl_world *w, const pl_body_def *d) {
                          d->material, w->material_count == 0 ? "; add a material first" : "");
     if (d->motion < PL_MOTION_DYNAMIC || d->motion > PL_MOTION_PRESCRIBED)
         return pl__error(w, PL_ERR_ARG, "body: unknown motion type %d", (int)d->motion);
-    if (!finite2(d->position) || !finite2(d->velocity) || !isfinite(d->angle) || !isfinite(d->omega))
+    if (!finite2(d->position) || !finite2(d->velocity) || !isfinite(d->angle) || !isfinite(d->omega) ||
+        !finite2(d->guide))
         return pl__error(w, PL_ERR_ARG, "body: position, velocity, angle and omega must be finite numbers");
     int nv = 0;
     pl_vec2 verts[PL_MAX_POLY_VERTICES];
@@ -155,6 +183,9 @@ int pl_world_add_body(pl_world *w, const pl_body_def *d) {
     w->law[i].law = PL_LAW_CONSTANT;
     w->law[i].velocity = w->vel[i];
     w->law[i].omega = w->omega[i];
+    w->law[i].fixed_rotation = d->fixed_rotation != 0;
+    if (d->fixed_rotation) w->omega[i] = 0;
+    set_guide(w, i, d->guide); /* finite: checked above */
     w->vert_offset[i] = w->verts_n;
     w->vert_count[i] = nv;
     for (int k = 0; k < nv; k++) w->verts_local[w->verts_n + k] = verts[k];
@@ -183,7 +214,7 @@ static int bad_body(const pl_world *w, int i) { return i < 0 || i >= w->n; }
 
 #define CHECK_BODY(w, i, what)                                                                  \
     if (bad_body(w, i))                                                                         \
-    return pl__error((pl_world *)(w), PL_ERR_ARG, "%s: body index must be in 0..%d (got %d)", what, \
+    return pl__error(w, PL_ERR_ARG, "%s: body index must be in 0..%d (got %d)", what, \
                      (w)->n - 1, i)
 
 pl_status pl_world_body_info(const pl_world *w, int i, pl_body_info *o) {
@@ -256,7 +287,7 @@ pl_status pl_world_prescribe_velocity(pl_world *w, int i, pl_vec2 v, double omeg
     CHECK_BODY(w, i, "prescribe_velocity");
     if (!finite2(v) || !isfinite(omega)) return pl__error(w, PL_ERR_ARG, "prescribe_velocity: values must be finite");
     w->motion[i] = PL_MOTION_PRESCRIBED;
-    memset(&w->law[i], 0, sizeof w->law[i]);
+    reset_law(w, i);
     w->law[i].law = PL_LAW_CONSTANT;
     w->law[i].velocity = v;
     w->law[i].omega = omega;
@@ -279,7 +310,7 @@ pl_status pl_world_set_body_motion(pl_world *w, int i, pl_motion_type m) {
         w->omega[i] = 0;
     }
     if (m == PL_MOTION_PRESCRIBED) {
-        memset(&w->law[i], 0, sizeof w->law[i]);
+        reset_law(w, i);
         w->law[i].law = PL_LAW_CONSTANT;
         w->law[i].velocity = w->vel[i];
         w->law[i].omega = w->omega[i];
@@ -287,6 +318,26 @@ pl_status pl_world_set_body_motion(pl_world *w, int i, pl_motion_type m) {
     set_mass_properties(w, i, w->materials[w->material[i]].def.density);
     w->need_rebuild = 1;
     w->classify_dirty = 1;
+    if (w->def.dt <= 0) w->dt = 0;
+    w->energy_initialised = 0;
+    return PL_OK;
+}
+
+pl_status pl_world_set_body_fixed_rotation(pl_world *w, int i, int on) {
+    CHECK_BODY(w, i, "set_fixed_rotation");
+    w->law[i].fixed_rotation = on != 0;
+    if (on) w->omega[i] = 0;
+    set_mass_properties(w, i, w->materials[w->material[i]].def.density);
+    if (w->def.dt <= 0) w->dt = 0; /* its rotational limit no longer counts */
+    w->energy_initialised = 0;
+    return PL_OK;
+}
+
+pl_status pl_world_set_body_guide(pl_world *w, int i, pl_vec2 dir) {
+    CHECK_BODY(w, i, "set_guide");
+    const pl_status st = set_guide(w, i, dir);
+    if (st != PL_OK) return st;
+    set_mass_properties(w, i, w->materials[w->material[i]].def.density);
     if (w->def.dt <= 0) w->dt = 0;
     w->energy_initialised = 0;
     return PL_OK;
@@ -319,7 +370,7 @@ pl_status pl_world_set_sinusoid(pl_world *w, int i, pl_vec2 amp, double freq, do
     if (!(t1 >= t0)) return pl__error(w, PL_ERR_ARG, "sinusoid: stop time %g must be >= start time %g", t1, t0);
     w->motion[i] = PL_MOTION_PRESCRIBED;
     set_mass_properties(w, i, w->materials[w->material[i]].def.density);
-    memset(&w->law[i], 0, sizeof w->law[i]);
+    reset_law(w, i);
     w->law[i].law = PL_LAW_SINUSOID;
     w->law[i].amplitude = amp;
     w->law[i].frequency = freq;
@@ -353,7 +404,7 @@ pl_status pl_world_set_servo(pl_world *w, int i, pl_vec2 dir, double target, dou
         return pl__error(w, PL_ERR_ARG, "servo: gain and vmax must be > 0 m/s (got %g, %g)", gain, vmax);
     w->motion[i] = PL_MOTION_PRESCRIBED;
     set_mass_properties(w, i, w->materials[w->material[i]].def.density);
-    memset(&w->law[i], 0, sizeof w->law[i]);
+    reset_law(w, i);
     w->law[i].law = PL_LAW_SERVO;
     w->law[i].servo_dir = (pl_vec2){dir.x / l, dir.y / l};
     w->law[i].servo_target = target;
@@ -377,7 +428,7 @@ pl_status pl_world_set_hinge(pl_world *w, int i, pl_vec2 pivot, int follow, doub
         return pl__error(w, PL_ERR_ARG, "hinge: the followed body %d must be prescribed (give it a motion law)", follow);
     w->motion[i] = PL_MOTION_PRESCRIBED;
     set_mass_properties(w, i, w->materials[w->material[i]].def.density);
-    memset(&w->law[i], 0, sizeof w->law[i]);
+    reset_law(w, i);
     w->law[i].law = PL_LAW_HINGE;
     w->law[i].pivot = pivot;
     w->law[i].rel0 = (pl_vec2){w->pos[i].x - pivot.x, w->pos[i].y - pivot.y};

@@ -50,6 +50,42 @@ static inline void pl__untouch(pl_pair *p) {
 
 static inline double pl__cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y * f.x; }
 
+/* End of a contact (the outlines no longer overlap at this evaluation). The normal dashpot acts
+   on the rate of the overlap, F_d = c d(delta)/dt; between evaluations it sees the half-step
+   velocity (delta_n - delta_{n-1})/dt, so over a contact it gives the telescoping impulse
+   c (delta_last - delta_before) and needs both ends at zero overlap to be the analytic zero
+   (the overlap-end contact). The onset is clipped in pl__disc_law; here the last increment,
+   from delta_last to 0, is given as one pull c delta_last / dt along the last normal, instead of
+   depending on where in the step the outlines parted. Without it the restitution of a damped
+   impact varied with the contact's phase within a step by up to 2 zeta omega dt (-1.55 % at
+   zeta = 0.3, 0.01 x critical). wall: the segment's index or -1. */
+static inline void pl__release(pl_disc_ctx *c, pl_pair *p, double dt, int a, int b, int wall) {
+    if (!p->touching) return;
+    if (p->cn > 0 && p->overlap > 0) {
+        const double fn = -p->cn * p->overlap / dt; /* on b along n: a pull */
+        const pl_vec2 n = p->normal;
+        const pl_vec2 F = {fn * n.x, fn * n.y};
+        c->force[b].x += F.x;
+        c->force[b].y += F.y;
+        c->force[a].x -= F.x;
+        c->force[a].y -= F.y;
+        double mw = 0;
+        if (wall >= 0) {
+            const pl_vec2 rw = {p->point.x - c->pos[wall].x, p->point.y - c->pos[wall].y};
+            mw = (wall == b ? 1 : -1) * pl__cross2(rw, F);
+            c->torque[wall] += mw;
+        }
+        if (c->track) {
+            c->tally[b].dfx += F.x;
+            c->tally[b].dfy += F.y;
+            c->tally[a].dfx -= F.x;
+            c->tally[a].dfy -= F.y;
+            if (wall >= 0) c->tally[wall].dm += mw;
+        }
+    }
+    pl__untouch(p);
+}
+
 /* Evaluates the law for a touching pair. vn, vt: relative velocity of b's material point with
    respect to a's. arm_a, arm_b: distances from the disc centres to the contact point (the
    moment is then -arm F_t). A wall is not centred on the line of the normal force: pass its
@@ -61,7 +97,11 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
                                                                 double arm_b, double rmin, const pl_vec2 *wall_r,
                                                                 int wall_end, double wrel, double reff) {
     const double fn_el = pp->kn * delta;
-    const double fn_d = -p->cn * vn;
+    /* onset: the outlines met during the last step; the dashpot sees only the overlap built
+       since then, c delta / dt, not the whole step's approach c |v_n| (see pl__release) */
+    double vd = vn;
+    if (!p->touching && vn * dt < -delta) vd = -delta / dt;
+    const double fn_d = -p->cn * vd;
     const double fn = fn_el + fn_d;
     double fs = p->fs - pp->ks * vt * dt;
     double fd = -p->cs * vt;
@@ -160,7 +200,7 @@ static inline void pl__contact_disc_disc(pl_disc_ctx *c, pl_pair *p, const pl_pa
     const double ra = c->radius[a], rb = c->radius[b], rs = ra + rb;
     const double d2 = dx * dx + dy * dy;
     if (d2 >= rs * rs) {
-        pl__untouch(p);
+        pl__release(c, p, dt, a, b, -1);
         return;
     }
     const double d = sqrt(d2), id = d > 0 ? 1.0 / d : 0;
@@ -191,7 +231,7 @@ static inline void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w, p
     const double dx = P.x - Q.x, dy = P.y - Q.y, d2 = dx * dx + dy * dy;
     const double r = c->radius[k];
     if (d2 >= r * r) {
-        pl__untouch(p);
+        pl__release(c, p, dt, p->a, p->b, s);
         return;
     }
     const double d = sqrt(d2);

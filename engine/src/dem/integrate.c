@@ -16,6 +16,16 @@
 
 static double sgn(double x) { return (x > 0) - (x < 0); }
 
+/* A body on a linear guide keeps only its velocity along the guide (the guide's force, across
+   it, does no work). Guided bodies have inv_inertia 0 (fixed rotation), which the caller tests
+   first so that free bodies do not read their law. */
+static inline void guide_velocity(const pl_world *w, int i, pl_vec2 *v) {
+    const pl_vec2 u = w->law[i].guide;
+    if (u.x == 0 && u.y == 0) return;
+    const double s = v->x * u.x + v->y * u.y;
+    *v = (pl_vec2){s * u.x, s * u.y};
+}
+
 /* Raised-cosine ramp of a sinusoid at time t: envelope e and its first two time derivatives
    (e = 1, 0, 0 without a ramp or between the ramps). */
 static void ramp_envelope(const pl_motion *m, double t, double *e, double *de, double *dde) {
@@ -132,12 +142,14 @@ void pl__integrate(pl_world *w, double dt) {
         } else {
             const double im = w->inv_mass[i], ii = w->inv_inertia[i];
             const pl_vec2 v0 = vel[i];
-            const double w0 = w->omega[i];
+            /* a guided body (fixed_rotation) has ii = 0 and is held at omega = 0 */
+            const double w0 = ii == 0 && w->law[i].fixed_rotation ? 0 : w->omega[i];
             pl_vec2 v1;
             double w1;
             if (plain) {
                 v1.x = v0.x + (w->force[i].x * im + g.x) * dt;
                 v1.y = v0.y + (w->force[i].y * im + g.y) * dt;
+                if (ii == 0) guide_velocity(w, i, &v1);
                 w1 = w0 + w->torque[i] * ii * dt;
                 vm = (pl_vec2){0.5 * (v0.x + v1.x), 0.5 * (v0.y + v1.y)};
                 wm = 0.5 * (w0 + w1);
@@ -158,6 +170,7 @@ void pl__integrate(pl_world *w, double dt) {
                 const double c = C + alpha * m;
                 const double a = 1 - c * dt * 0.5 * im, b = 1 / (1 + c * dt * 0.5 * im);
                 v1 = (pl_vec2){(v0.x * a + F.x * dt * im) * b, (v0.y * a + F.y * dt * im) * b};
+                if (ii == 0) guide_velocity(w, i, &v1);
                 w1 = w0;
                 if (I > 0) {
                     const double cr = Cr + alpha * I;

@@ -4,6 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The pair tables hold material_count^2 entries (144 bytes each): 2048 materials take 600 MB. */
+#define PL_MAX_MATERIALS 2048
+
 pl_material_def pl_default_material_def(void) {
     pl_material_def d;
     memset(&d, 0, sizeof d);
@@ -47,6 +50,17 @@ static double zeta_from_restitution(double e) {
     return -l / sqrt(M_PI * M_PI + l * l);
 }
 
+/* The overrides are kept as a lower triangle, row a holding the pairs (a, 0..a): its layout
+   does not depend on the material count, so adding a material only appends a row. */
+static size_t override_index(int a, int b) {
+    if (a < b) {
+        const int t = a;
+        a = b;
+        b = t;
+    }
+    return (size_t)a * (size_t)(a + 1) / 2 + (size_t)b;
+}
+
 int pl_world_add_material(pl_world *w, const pl_material_def *def) {
     if (!def || !def->name || !def->name[0])
         return pl__error(w, PL_ERR_ARG, "material: a name is required");
@@ -66,17 +80,38 @@ int pl_world_add_material(pl_world *w, const pl_material_def *def) {
         return pl__error(w, PL_ERR_ARG, "material '%s': friction must be >= 0 (got %g)", def->name, def->friction);
     if (!(def->rolling >= 0) || !isfinite(def->rolling))
         return pl__error(w, PL_ERR_ARG, "material '%s': rolling must be >= 0 (got %g)", def->name, def->rolling);
-    if (!(def->cohesion >= 0))
-        return pl__error(w, PL_ERR_ARG, "material '%s': cohesion must be >= 0 (got %g)", def->name, def->cohesion);
-    if (!(def->cn >= 0))
-        return pl__error(w, PL_ERR_ARG, "material '%s': cn must be >= 0 N s/m (got %g)", def->name, def->cn);
+    if (!(def->cohesion >= 0) || !isfinite(def->cohesion))
+        return pl__error(w, PL_ERR_ARG, "material '%s': cohesion must be finite and >= 0 (got %g)", def->name, def->cohesion);
+    if (!(def->cn >= 0) || !isfinite(def->cn))
+        return pl__error(w, PL_ERR_ARG, "material '%s': cn must be finite and >= 0 N s/m (got %g)", def->name, def->cn);
+    if (!isfinite(def->ks) || !isfinite(def->cs) || !isfinite(def->young))
+        return pl__error(w, PL_ERR_ARG, "material '%s': ks, cs and young must be finite (got %g, %g, %g)", def->name,
+                         def->ks, def->cs, def->young);
     if (def->restitution >= 0 && !(def->restitution > 0 && def->restitution <= 1))
         return pl__error(w, PL_ERR_ARG, "material '%s': restitution must be in (0, 1] (got %g)", def->name, def->restitution);
+    if (w->material_count >= PL_MAX_MATERIALS)
+        return pl__error(w, PL_ERR_ARG, "material '%s': at most %d materials (the pair tables grow as the square "
+                         "of the count)", def->name, PL_MAX_MATERIALS);
     if (w->material_count == w->material_cap) {
-        int cap = w->material_cap ? 2 * w->material_cap : 8;
+        /* geometric growth of the material list and of the two pair tables, which are
+           allocated for material_cap^2 entries (the snapshot copies material_count^2 of each):
+           adding N materials costs O(N^2) in all (it was O(N^3): both tables were rebuilt at
+           the new size and every pair recombined on each add) */
+        const int cap = w->material_cap ? 2 * w->material_cap : 8;
+        const size_t cells = (size_t)cap * (size_t)cap;
         pl_material *m = realloc(w->materials, (size_t)cap * sizeof *m);
         if (!m) return pl__error(w, PL_ERR_NOMEM, "material: out of memory");
         w->materials = m;
+        pl_pair_def *ov = realloc(w->pair_overrides, cells * sizeof *ov);
+        if (!ov) return pl__error(w, PL_ERR_NOMEM, "material: out of memory for %d materials' pair table", cap);
+        w->pair_overrides = ov;
+        /* the combined table is rebuilt from scratch when next needed: no need to keep it */
+        free(w->pair_params);
+        w->pair_params = calloc(cells, sizeof *w->pair_params);
+        if (!w->pair_params) return pl__error(w, PL_ERR_NOMEM, "material: out of memory for %d materials' pair table", cap);
+        /* the triangle's later rows are written as materials arrive; the rest stays defined */
+        const size_t used = (size_t)w->material_count * (w->material_count + 1) / 2;
+        for (size_t k = used; k < cells; k++) ov[k] = pl_default_pair_def();
         w->material_cap = cap;
     }
     const int id = w->material_count;
@@ -85,24 +120,13 @@ int pl_world_add_material(pl_world *w, const pl_material_def *def) {
     m->def = *def;
     strcpy(m->name, def->name);
     m->def.name = m->name;
-    /* grow the override table keeping previous overrides */
-    const int n = id + 1;
-    pl_pair_def *ov = malloc((size_t)n * n * sizeof *ov);
-    pl_pair_params *pp = malloc((size_t)n * n * sizeof *pp);
-    if (!ov || !pp) {
-        free(ov);
-        free(pp);
-        return pl__error(w, PL_ERR_NOMEM, "material: out of memory");
-    }
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++)
-            ov[i * n + j] = (i < id && j < id) ? w->pair_overrides[i * id + j] : pl_default_pair_def();
-    free(w->pair_overrides);
-    free(w->pair_params);
-    w->pair_overrides = ov;
-    w->pair_params = pp;
-    w->material_count = n;
-    pl__update_pair_params(w);
+    /* the new material's row of the override triangle (already at the defaults) */
+    for (int j = 0; j <= id; j++) w->pair_overrides[override_index(id, j)] = pl_default_pair_def();
+    w->material_count = id + 1;
+    /* the combined parameters are recomputed once before the next use (pl_world_step,
+       pl__compute_dt, pl_world_pair_params all check the flag), not on every add */
+    w->pair_params_dirty = 1;
+    w->need_rebuild = 1;
     w->dt = w->def.dt > 0 ? w->def.dt : 0; /* recompute the automatic step */
     return id;
 }
@@ -126,11 +150,37 @@ pl_status pl_world_set_pair(pl_world *w, int a, int b, const pl_pair_def *def) {
                          w->material_count - 1, a, b);
     if (def->restitution >= 0 && !(def->restitution > 0 && def->restitution <= 1))
         return pl__error(w, PL_ERR_ARG, "set_pair: restitution must be in (0, 1] (got %g)", def->restitution);
-    const int n = w->material_count;
-    w->pair_overrides[a * n + b] = *def;
-    w->pair_overrides[b * n + a] = *def;
-    pl__update_pair_params(w);
+    const double f[] = {def->kn, def->ks, def->friction, def->cohesion, def->cn, def->cs, def->restitution, def->rolling};
+    for (int k = 0; k < 8; k++)
+        if (!isfinite(f[k]))
+            return pl__error(w, PL_ERR_ARG, "set_pair: every field must be finite (< 0 keeps the default; got %g)", f[k]);
+    w->pair_overrides[override_index(a, b)] = *def;
+    w->pair_params_dirty = 1;
+    w->need_rebuild = 1;
     w->dt = w->def.dt > 0 ? w->def.dt : 0;
+    return PL_OK;
+}
+
+static pl_status check_pair_index(pl_world *w, const char *fn, int a, int b) {
+    if (a < 0 || a >= w->material_count || b < 0 || b >= w->material_count)
+        return pl__error(w, PL_ERR_ARG, "%s: material index out of range 0..%d (got %d, %d)", fn,
+                         w->material_count - 1, a, b);
+    return PL_OK;
+}
+
+pl_status pl_world_pair_override(pl_world *w, int a, int b, pl_pair_def *out) {
+    const pl_status st = check_pair_index(w, "pair_override", a, b);
+    if (st != PL_OK) return st;
+    *out = w->pair_overrides[override_index(a, b)];
+    return PL_OK;
+}
+
+pl_status pl_world_pair_params(pl_world *w, int a, int b, pl_pair_def *out) {
+    const pl_status st = check_pair_index(w, "pair_params", a, b);
+    if (st != PL_OK) return st;
+    if (w->pair_params_dirty) pl__update_pair_params(w);
+    const pl_pair_params *p = pl__pair_params(w, a, b);
+    *out = (pl_pair_def){p->kn, p->ks, p->friction, p->cohesion, p->cn, p->cs, p->restitution, p->rolling};
     return PL_OK;
 }
 
@@ -139,7 +189,7 @@ void pl__update_pair_params(pl_world *w) {
     for (int i = 0; i < n; i++) {
         for (int j = 0; j < n; j++) {
             const pl_material_def *a = &w->materials[i].def, *b = &w->materials[j].def;
-            const pl_pair_def *o = &w->pair_overrides[i * n + j];
+            const pl_pair_def *o = &w->pair_overrides[override_index(i, j)];
             pl_pair_params p;
             p.kn = o->kn >= 0 ? o->kn : series(material_kn(a), material_kn(b));
             p.ks = o->ks >= 0 ? o->ks : series(material_ks(a), material_ks(b));

@@ -19,7 +19,7 @@ static int outline(const pl_world *w, int i, pl_vec2 *v) {
 
 static pl_status write_bodies(const pl_world *w, const char *path) {
     FILE *f = fopen(path, "w");
-    if (!f) return pl__error((pl_world *)w, PL_ERR_IO, "vtk: cannot write '%s'", path);
+    if (!f) return pl__error(w, PL_ERR_IO, "vtk: cannot write '%s'", path);
     long npts = 0;
     pl_vec2 v[PL_MAX_POLY_VERTICES > 24 ? PL_MAX_POLY_VERTICES : 24];
     for (int i = 0; i < w->n; i++) npts += outline(w, i, v);
@@ -57,13 +57,13 @@ static pl_status write_bodies(const pl_world *w, const char *path) {
     for (int i = 0; i < w->n; i++) fprintf(f, "%d\n", i);
     fprintf(f, "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
     const int bad = ferror(f);
-    if (fclose(f) != 0 || bad) return pl__error((pl_world *)w, PL_ERR_IO, "vtk: error writing '%s'", path);
+    if (fclose(f) != 0 || bad) return pl__error(w, PL_ERR_IO, "vtk: error writing '%s'", path);
     return PL_OK;
 }
 
 static pl_status write_contacts(const pl_world *w, const char *path) {
     FILE *f = fopen(path, "w");
-    if (!f) return pl__error((pl_world *)w, PL_ERR_IO, "vtk: cannot write '%s'", path);
+    if (!f) return pl__error(w, PL_ERR_IO, "vtk: cannot write '%s'", path);
     const int nc = pl_world_contact_count(w);
     fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
@@ -90,7 +90,7 @@ static pl_status write_contacts(const pl_world *w, const char *path) {
         if (w->pairs[k].touching) fprintf(f, "%.9g\n", w->pairs[k].ft);
     fprintf(f, "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
     const int bad = ferror(f);
-    if (fclose(f) != 0 || bad) return pl__error((pl_world *)w, PL_ERR_IO, "vtk: error writing '%s'", path);
+    if (fclose(f) != 0 || bad) return pl__error(w, PL_ERR_IO, "vtk: error writing '%s'", path);
     return PL_OK;
 }
 

@@ -74,6 +74,8 @@ typedef struct pl_motion {
     pl_vec2 servo_dir; double servo_target; double servo_gain; double servo_vmax;
     pl_vec2 servo_drive; int servo_fluid;   /* servo extras (servo_drive.c): drive velocity, fluid force counted */
     pl_vec2 pivot, rel0; double angle0; int follow; double follow_x0, height; /* hinge */
+    int fixed_rotation;                  /* any body: the angle is held (guided piston; body.c) */
+    pl_vec2 guide;                       /* dynamic body: unit direction it may move along, or {0, 0} */
 } pl_motion;
 
 /* Acceleration (m/s^2) of a prescribed body's law at time t: the sinusoid's (with its ramp)
@@ -88,7 +90,8 @@ typedef struct pl_tally {
 
 struct pl_world {
     pl_world_def def;
-    char error[PL_ERR_LEN];
+    char *error;                  /* PL_ERR_LEN bytes: the last error message. A buffer of its own, so
+                                     that a read-only query can report through a const world */
 
     /* materials */
     pl_material *materials;
@@ -177,7 +180,7 @@ struct pl_world {
 };
 
 /* Error helper: formats into w->error and returns status. */
-pl_status pl__error(pl_world *w, pl_status s, const char *fmt, ...)
+pl_status pl__error(const pl_world *w, pl_status s, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif

@@ -180,7 +180,7 @@ pl_status pl_world_get_flag(const pl_world *w, const char *name, double *v) {
     if (i < 0) {
         char list[1024];
         list_flags(list, sizeof list);
-        return pl__error((pl_world *)w, PL_ERR_UNKNOWN, "unknown flag '%s'; valid flags: %s", name ? name : "(null)",
+        return pl__error(w, PL_ERR_UNKNOWN, "unknown flag '%s'; valid flags: %s", name ? name : "(null)",
                          list);
     }
     *v = w->flag_values[i];

@@ -61,6 +61,9 @@ typedef struct pl_model_class {
     /* A new, empty instance (restoring a snapshot into a world that has none); NULL when out of
        memory. */
     void *(*create)(void);
+    /* Build what the queries read (meshes, boundary conditions, an initial solution) without
+       advancing time; the world's explicit prepare step (pl_world_prepare). May be NULL. */
+    pl_status (*prepare)(void *self, pl_world *w);
     /* Update the model's state over [t, t + dt] (solve when due). Errors set the world's
        message through pl__world_error and return its status. */
     pl_status (*advance)(void *self, pl_world *w, const pl_grain_view *g, double dt);
@@ -92,7 +95,7 @@ pl_status pl__world_attach(pl_world *w, const pl_model_class *cls, void *self);
 /* The grain columns of the world now. */
 pl_grain_view pl__world_grains(const pl_world *w);
 /* Formats the world's last-error message and returns s. */
-pl_status pl__world_error(pl_world *w, pl_status s, const char *fmt, ...)
+pl_status pl__world_error(const pl_world *w, pl_status s, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif

@@ -56,10 +56,10 @@ void pl__models_destroy(pl_world *w) {
     w->model_n = w->model_cap = 0;
 }
 
-pl_status pl__world_error(pl_world *w, pl_status s, const char *fmt, ...) {
+pl_status pl__world_error(const pl_world *w, pl_status s, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(w->error, sizeof w->error, fmt, ap);
+    vsnprintf(w->error, PL_ERR_LEN, fmt, ap);
     va_end(ap);
     return s;
 }

@@ -186,7 +186,7 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
     w->ext_moment = live.ext_moment;
     w->wants_load = live.wants_load;
     w->ext_cap = live.ext_cap;
-    memcpy(w->error, live.error, sizeof w->error);
+    w->error = live.error;
     for (int k = 0; k < NSPECS; k++) {
         const size_t bytes = count_of(o, SPECS[k].count_kind) * SPECS[k].elem;
         if (bytes) memcpy(*field_ptr(w, &SPECS[k]), s->data[k], bytes);

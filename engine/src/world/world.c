@@ -22,10 +22,10 @@ pl_world_def pl_default_world_def(void) {
     return d;
 }
 
-pl_status pl__error(pl_world *w, pl_status s, const char *fmt, ...) {
+pl_status pl__error(const pl_world *w, pl_status s, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(w->error, sizeof w->error, fmt, ap);
+    vsnprintf(w->error, PL_ERR_LEN, fmt, ap);
     va_end(ap);
     return s;
 }
@@ -35,6 +35,11 @@ const char *pl_world_last_error(const pl_world *w) { return w ? w->error : "no w
 pl_world *pl_world_create(const pl_world_def *def) {
     pl_world *w = calloc(1, sizeof *w);
     if (!w) return NULL;
+    w->error = calloc(PL_ERR_LEN, 1);
+    if (!w->error) {
+        free(w);
+        return NULL;
+    }
     w->def = def ? *def : pl_default_world_def();
     if (w->def.dt_safety <= 0) w->def.dt_safety = 0.1;
     if (w->def.guard_interval < 1) w->def.guard_interval = 1;
@@ -44,6 +49,7 @@ pl_world *pl_world_create(const pl_world_def *def) {
     w->nonfinite_body = -1;
     pl__flags_init(w);
     if (!w->flag_values) {
+        free(w->error);
         free(w);
         return NULL;
     }
@@ -70,6 +76,7 @@ void pl_world_destroy(pl_world **wp) {
     free(w->cell_start); free(w->cell_items); free(w->body_cell); free(w->cursor);
     free(w->is_large); free(w->large_list); free(w->cand);
     free(w->flag_values);
+    free(w->error);
     free(w);
     *wp = NULL;
 }
@@ -101,6 +108,16 @@ static void init_energy_reference(pl_world *w) {
     w->ext0 = w->e_external;
     w->e_initial = w->e_supply0 + w->pe0 + w->e_damped + w->e_friction - w->e_external;
     w->energy_initialised = 1;
+}
+
+pl_status pl_world_prepare(pl_world *w) {
+    for (int k = 0; k < w->model_n; k++) {
+        const pl_model_slot *m = &w->models[k];
+        if (!m->cls->prepare) continue;
+        pl_status st = m->cls->prepare(m->self, w);
+        if (st != PL_OK) return st;
+    }
+    return PL_OK;
 }
 
 pl_status pl_world_step(pl_world *w, int nsteps) {

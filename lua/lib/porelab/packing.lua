@@ -28,12 +28,38 @@ local function check_fields(fn, def, valid)
   end
 end
 
+-- finite numbers only: inf and nan pass "> 0" tests and turn into huge loops or nan positions
+local function finite(v) return type(v) == "number" and v == v and v > -math.huge and v < math.huge end
+
+-- A region larger than this (m) is refused: no porelab scene needs one, and beyond it the
+-- rounding of positions exceeds any grain size that fits the lattice/body limit.
+local MAX_EXTENT = 1e6
+-- Most bodies one helper may create (each one costs a Lua table and engine storage).
+local MAX_BODIES = 1000000
+
 local function vec(fn, def, field)
   local v = def[field]
   if type(v) ~= "table" or type(v[1] or v.x) ~= "number" or type(v[2] or v.y) ~= "number" then
     fail(fn, "%s is required (a vector {x, y} in m)", field)
   end
-  return v[1] or v.x, v[2] or v.y
+  local x, y = v[1] or v.x, v[2] or v.y
+  if not (finite(x) and finite(y) and math.abs(x) <= MAX_EXTENT and math.abs(y) <= MAX_EXTENT) then
+    fail(fn, "%s must be a vector of finite numbers within +-%g m (got {%s, %s})", field, MAX_EXTENT,
+         tostring(x), tostring(y))
+  end
+  return x, y
+end
+
+-- weights: one finite number >= 0 per entry, not all zero
+local function check_weights(fn, weights, n)
+  if type(weights) ~= "table" or #weights ~= n then fail(fn, "weights must have one entry per radius (%d)", n) end
+  local total = 0
+  for i = 1, n do
+    local v = weights[i]
+    if not finite(v) or v < 0 then fail(fn, "weights[%d] must be a finite number >= 0 (got %s)", i, tostring(v)) end
+    total = total + v
+  end
+  if not (total > 0) then fail(fn, "weights must not all be 0") end
 end
 
 local function region(fn, def)
@@ -49,8 +75,8 @@ end
 local function positive(fn, def, field, default)
   local v = def[field]
   if v == nil then v = default end
-  if type(v) ~= "number" or not (v > 0) then
-    fail(fn, "%s must be > 0 (got %s)", field, tostring(v))
+  if not finite(v) or not (v > 0) then
+    fail(fn, "%s must be a finite number > 0 (got %s)", field, tostring(v))
   end
   return v
 end
@@ -80,10 +106,20 @@ function packing.lattice(w, def)
   local x0, y0, x1, y1 = region("lattice", def)
   local r = positive("lattice", def, "radius")
   local gap = def.gap or 0
-  if type(gap) ~= "number" or gap < 0 then fail("lattice", "gap must be >= 0 (got %s)", tostring(gap)) end
+  if not finite(gap) or gap < 0 then fail("lattice", "gap must be a finite number >= 0 (got %s)", tostring(gap)) end
   local d = 2 * r * (1 + gap)
   local hex = def.hex ~= false
   local dy = hex and d * math.sqrt(3) / 2 or d
+  -- count first: a tiny radius would otherwise create discs until memory runs out
+  local nx = math.max(0, math.floor((x1 - x0 - 2 * r) / d + 1e-9) + 1)
+  local ny = math.max(0, math.floor((y1 - y0 - 2 * r) / dy + 1e-9) + 1)
+  if nx * ny > MAX_BODIES then
+    fail("lattice", "radius %g m in a %g x %g m region makes about %.0f discs (at most %d): use a larger radius or a smaller region",
+         r, x1 - x0, y1 - y0, nx * ny, MAX_BODIES)
+  end
+  if x0 + d == x0 or x1 + d == x1 or y0 + dy == y0 or y1 + dy == y1 then
+    fail("lattice", "radius %g m is below the rounding of the coordinates (%g, %g)", r, x1, y1)
+  end
   local bodies = {}
   local row = 0
   local y = y0 + r
@@ -115,11 +151,11 @@ function packing.rain(w, def)
   if type(radii) ~= "table" or #radii == 0 then fail("rain", "radii must be a non-empty list of radii in m") end
   local rmax = 0
   for i, r in ipairs(radii) do
-    if type(r) ~= "number" or not (r > 0) then fail("rain", "radii[%d] must be > 0 (got %s)", i, tostring(r)) end
+    if not finite(r) or not (r > 0) then fail("rain", "radii[%d] must be a finite number > 0 (got %s)", i, tostring(r)) end
     rmax = math.max(rmax, r)
   end
   local weights = def.weights or {}
-  if def.weights and #weights ~= #radii then fail("rain", "weights must have one entry per radius (%d)", #radii) end
+  if def.weights then check_weights("rain", weights, #radii) end
   if not def.weights then for i = 1, #radii do weights[i] = 1 end end
   local mats = def.materials
   if mats then
@@ -175,23 +211,23 @@ local function sampler(fn, def, rng)
     if type(radii) ~= "table" or #radii == 0 then fail(fn, "radii must be a non-empty list (m)") end
     local lo, hi = math.huge, 0
     for i, r in ipairs(radii) do
-      if type(r) ~= "number" or not (r > 0) then fail(fn, "radii[%d] must be > 0 (got %s)", i, tostring(r)) end
+      if not finite(r) or not (r > 0) then fail(fn, "radii[%d] must be a finite number > 0 (got %s)", i, tostring(r)) end
       lo, hi = math.min(lo, r), math.max(hi, r)
     end
-    if weights and #weights ~= #radii then fail(fn, "weights must have one entry per radius (%d)", #radii) end
+    if weights then check_weights(fn, weights, #radii) end
     if not weights then weights = {}; for i = 1, #radii do weights[i] = 1 end end
     return function() return radii[rng:choose(weights)] end, lo, hi
   elseif def.radius_range then
     local a, b = def.radius_range[1], def.radius_range[2]
-    if type(a) ~= "number" or type(b) ~= "number" or not (a > 0 and b >= a) then
+    if not finite(a) or not finite(b) or not (a > 0 and b >= a) then
       fail(fn, "radius_range must be {rmin, rmax} with 0 < rmin <= rmax (m)")
     end
     return function() return rng:uniform(a, b) end, a, b
   else
     local ln = def.lognormal
     local m, sg = ln.median, ln.sigma
-    if type(m) ~= "number" or not (m > 0) then fail(fn, "lognormal.median must be > 0 (m)") end
-    if type(sg) ~= "number" or not (sg >= 0) then fail(fn, "lognormal.sigma must be >= 0") end
+    if not finite(m) or not (m > 0) then fail(fn, "lognormal.median must be a finite number > 0 (m)") end
+    if not finite(sg) or not (sg >= 0 and sg <= 5) then fail(fn, "lognormal.sigma must be in 0 .. 5") end
     local a, b = ln.min or m * math.exp(-2 * sg), ln.max or m * math.exp(2 * sg)
     return function()
       while true do -- Box-Muller, truncated to [a, b]

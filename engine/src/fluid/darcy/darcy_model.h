@@ -15,4 +15,5 @@ pl_status pl__darcy_restore(void *self, pl_world *w, const void *snap);
 void pl__darcy_snapshot_free(void *snap);
 double pl__darcy_cost(const void *self, long *calls);
 void pl__darcy_destroy(void *self);
+pl_status pl__darcy_prepare(void *self, pl_world *w);
 #endif

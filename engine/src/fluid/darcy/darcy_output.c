@@ -9,6 +9,8 @@
 #include <string.h>
 
 pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path) {
+    pl_status st = pl_world_prepare(w); /* an action, not a query: the field it writes is built */
+    if (st != PL_OK) return st;
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
     if (nn <= 0) return pl__world_error(w, PL_ERR_STATE, "fluid_write_vtu: no fluid mesh");
     struct pl_fluid *f = pl__darcy(w);

@@ -81,6 +81,7 @@ const pl_model_class pl_darcy_class = {
     .params = TABLE,
     .nparams = NROWS,
     .create = pl__darcy_create,
+    .prepare = pl__darcy_prepare,
     .advance = pl__darcy_advance,
     .loads = pl__darcy_loads,
     .hash = pl__darcy_hash,

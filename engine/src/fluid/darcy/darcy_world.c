@@ -432,53 +432,63 @@ pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, 
 
 /* ---------------------------------------------------------------- queries */
 
-/* Queries see the field the first step will use: with FLUIDS_ON and FIRST_STEP_STATIC the
-   static solution is computed on the first query (a frame at t = 0 shows it). */
-static struct pl_fluid *built(pl_world *w) {
-    struct pl_fluid *f = pl__darcy(w);
-    if (!f) return NULL;
+/* Prepare (the world's explicit build step, pl_world_prepare): meshes, applies changed boundary
+   lines and, with FLUIDS_ON and FIRST_STEP_STATIC, computes the static solution the first step
+   will use (so that a frame at t = 0 shows it). The hosts call it before reading the field;
+   the queries below only read. */
+pl_status pl__darcy_prepare(void *self, pl_world *w) {
+    struct pl_fluid *f = self;
     if (f->mesh_dirty || f->bc_dirty) {
-        /* a query must not change what the next step does: when it rebuilds changed boundary
-           conditions, the next step still makes the update the stepping hook makes after a
-           change (fluid_hook.c), as it would without the query */
+        /* preparing must not change what the next step does: when it rebuilds changed boundary
+           conditions, the next step still makes the update the stepping makes after a change
+           (darcy_model.c), as it would without the prepare */
         const int bcs_only = !f->mesh_dirty && f->initialised;
         pl__fluid_read_params(w, &f->par);
-        if (ensure_built(w) != PL_OK) return NULL;
+        pl_status st = ensure_built(w);
+        if (st != PL_OK) return st;
         if (bcs_only) f->refresh_pending = 1;
     }
-    if (!f->initialised && pl__world_flag_values(w, &pl_darcy_class)[0] != 0 && pl__world_flag_values(w, &pl_darcy_class)[1] != 0) {
-        if (pl__fluid_update(w, 0, 1) != PL_OK) return f; /* message in last_error; field stays */
+    const double *flags = pl__world_flag_values(w, &pl_darcy_class);
+    if (!f->initialised && flags[0] != 0 && flags[1] != 0) { /* FLUIDS_ON, FIRST_STEP_STATIC */
+        pl_status st = pl__fluid_update(w, 0, 1);
+        if (st != PL_OK) return st; /* message in last_error; the field stays */
         f->initialised = 1;
-        /* the stepping hook would have made this static solve at the first step and counted
+        /* the stepping would have made this static solve at the first step and counted
            from there: start one step behind so that the later updates fall on the same steps
-           whether or not a query (e.g. a frame at t = 0) came first (docs/soil.md §7) */
+           whether or not a prepare (e.g. for a frame at t = 0) came first (docs/soil.md §7) */
         f->steps_since = -1;
         f->geom_since = -1; /* likewise the cuts of the pieces (FLUID_POROSITY_TIMESTEPS) */
         f->time_since = 0;
     }
-    return f;
+    return PL_OK;
 }
 
-int pl_world_fluid_node_count(pl_world *w) {
-    struct pl_fluid *f = built(w);
+/* The model when its mesh and system are built (after a prepare or a step), else NULL. */
+static const struct pl_fluid *built(const pl_world *w) {
+    const struct pl_fluid *f = pl__darcy(w);
+    return f && f->built && !f->mesh_dirty && f->head ? f : NULL;
+}
+
+int pl_world_fluid_node_count(const pl_world *w) {
+    const struct pl_fluid *f = built(w);
     return f ? f->mesh.nn : 0;
 }
 
-int pl_world_fluid_triangle_count(pl_world *w) {
-    struct pl_fluid *f = built(w);
+int pl_world_fluid_triangle_count(const pl_world *w) {
+    const struct pl_fluid *f = built(w);
     return f ? f->mesh.ne : 0;
 }
 
-int pl_world_fluid_copy_nodes(pl_world *w, pl_vec2 *out, int cap) {
-    struct pl_fluid *f = built(w);
+int pl_world_fluid_copy_nodes(const pl_world *w, pl_vec2 *out, int cap) {
+    const struct pl_fluid *f = built(w);
     if (!f) return 0;
     int n = f->mesh.nn < cap ? f->mesh.nn : cap;
     memcpy(out, f->mesh.xy, sizeof(pl_vec2) * (size_t)(n > 0 ? n : 0));
     return n;
 }
 
-int pl_world_fluid_copy_triangles(pl_world *w, int *out, int cap) {
-    struct pl_fluid *f = built(w);
+int pl_world_fluid_copy_triangles(const pl_world *w, int *out, int cap) {
+    const struct pl_fluid *f = built(w);
     if (!f) return 0;
     int n = f->mesh.ne < cap ? f->mesh.ne : cap;
     for (int k = 0; k < 3 * n; k++) out[k] = f->mesh.tri[k];
@@ -495,8 +505,8 @@ static double head_ref(const struct pl_fluid *f) {
     return n ? s / n : 0;
 }
 
-int pl_world_fluid_copy_node_field(pl_world *w, pl_fluid_node_field field, double *out, int cap) {
-    struct pl_fluid *f = built(w);
+int pl_world_fluid_copy_node_field(const pl_world *w, pl_fluid_node_field field, double *out, int cap) {
+    const struct pl_fluid *f = built(w);
     if (!f) return 0;
     int n = f->mesh.nn < cap ? f->mesh.nn : cap;
     double rg = f->par.density * f->par.g, href = head_ref(f);
@@ -513,8 +523,8 @@ int pl_world_fluid_copy_node_field(pl_world *w, pl_fluid_node_field field, doubl
     return n;
 }
 
-int pl_world_fluid_copy_element_field(pl_world *w, pl_fluid_element_field field, double *out, int cap) {
-    struct pl_fluid *f = built(w);
+int pl_world_fluid_copy_element_field(const pl_world *w, pl_fluid_element_field field, double *out, int cap) {
+    const struct pl_fluid *f = built(w);
     if (!f) return 0;
     int n = f->mesh.ne < cap ? f->mesh.ne : cap;
     /* Darcy flux q = -D (grad h + a/g): in a shaking table's frame (pl_world_fluid_set_frame)
@@ -536,8 +546,8 @@ int pl_world_fluid_copy_element_field(pl_world *w, pl_fluid_element_field field,
     return n;
 }
 
-int pl_world_fluid_pressure_at(pl_world *w, pl_vec2 p, double *pressure, double *head) {
-    struct pl_fluid *f = built(w);
+int pl_world_fluid_pressure_at(const pl_world *w, pl_vec2 p, double *pressure, double *head) {
+    const struct pl_fluid *f = built(w);
     if (!f) {
         if (pressure) *pressure = 0;
         if (head) *head = NAN;
@@ -546,14 +556,14 @@ int pl_world_fluid_pressure_at(pl_world *w, pl_vec2 p, double *pressure, double 
     return pl_fl_pressure_at(f, p, pressure, head) >= 0;
 }
 
-double pl_world_fluid_line_inflow(pl_world *w, int line) {
-    struct pl_fluid *f = built(w);
+double pl_world_fluid_line_inflow(const pl_world *w, int line) {
+    const struct pl_fluid *f = built(w);
     if (!f || line < 0 || line >= f->nl) return NAN;
     return pl_fl_line_inflow(f, line);
 }
 
-pl_status pl_world_fluid_body_force(pl_world *w, int body, pl_vec2 *force, double *moment) {
-    struct pl_fluid *f = built(w);
+pl_status pl_world_fluid_body_force(const pl_world *w, int body, pl_vec2 *force, double *moment) {
+    const struct pl_fluid *f = built(w);
     if (!f) return pl__world_error(w, PL_ERR_STATE, "fluid_body_force: no fluid model");
     const int nb = pl__world_grains(w).n;
     if (body < 0 || body >= nb)
