@@ -3,6 +3,8 @@
 
 #include <math.h>
 #include <signal.h>
+#include <string.h>
+#include <time.h>
 
 #define LABEL "  %-15s"
 
@@ -100,14 +102,60 @@ void pl_report_time_step(FILE *f, pl_world *w)
                 r.dt_critical);
 }
 
-void pl_report_fluid(FILE *f, const pl_world *w)
+static double cpu_seconds(void)
 {
-    if (flag_value(w, "FLUIDS_ON") != 0)
-        fprintf(f, LABEL "Darcy pore fluid (FLUIDS_ON = 1), density %g kg/m^3, solved every "
-                         "%g steps\n",
-                "fluid", flag_value(w, "FLUID_DENSITY"), flag_value(w, "FLUID_SOLVE_TIMESTEPS"));
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+void pl_report_models(FILE *f, pl_world *w, int trial_steps)
+{
+    const int n = pl_world_model_count(w);
+    if (n == 0) fprintf(f, LABEL "none: dry grains (no fluid model attached)\n", "fluid model");
+    for (int k = 0; k < n; k++) {
+        const char *name = pl_world_model_name(w, k);
+        fprintf(f, LABEL "%s: %s", k ? "" : "fluid model", name, pl_world_model_label(w, k));
+        if (strcmp(name, "darcy") == 0) {
+            if (flag_value(w, "FLUIDS_ON") != 0)
+                fprintf(f, "; on, density %g kg/m^3, solved every %g steps", flag_value(w, "FLUID_DENSITY"),
+                        flag_value(w, "FLUID_SOLVE_TIMESTEPS"));
+            else
+                fprintf(f, "; off (FLUIDS_ON = 0): no fluid work");
+        }
+        fprintf(f, "\n");
+    }
+    if (trial_steps <= 0 || pl_world_body_count(w) == 0) return;
+    /* a trial: step from a snapshot, measure, restore (the scene's state is left as it was) */
+    pl_snapshot *snap = pl_world_snapshot(w);
+    if (!snap) return;
+    double before[16] = {0};
+    for (int k = 0; k < n && k < 16; k++) before[k] = pl_world_model_cost(w, k, NULL);
+    const double t0 = cpu_seconds();
+    int steps = 0;
+    pl_status st = PL_OK;
+    while (steps < trial_steps && st == PL_OK) {
+        st = pl_world_step(w, 1);
+        steps++;
+        if (cpu_seconds() - t0 > 2.0) break; /* a slow scene: a few steps tell enough */
+    }
+    const double total = cpu_seconds() - t0;
+    double models = 0;
+    char parts[512] = "";
+    size_t off = 0;
+    for (int k = 0; k < n && k < 16; k++) {
+        const double c = pl_world_model_cost(w, k, NULL) - before[k];
+        models += c;
+        off += (size_t)snprintf(parts + off, off < sizeof parts ? sizeof parts - off : 0, ", %s %.3g ms",
+                                pl_world_model_name(w, k), 1e3 * c / steps);
+    }
+    if (st != PL_OK)
+        fprintf(f, LABEL "trial stopped after %d steps: %s\n", "cost per step", steps, pl_world_last_error(w));
     else
-        fprintf(f, LABEL "none (FLUIDS_ON = 0)\n", "fluid");
+        fprintf(f, LABEL "%.3g ms CPU (grains %.3g ms%s; measured over %d steps)\n", "cost per step",
+                1e3 * total / steps, 1e3 * (total - models) / steps, parts, steps);
+    pl_world_restore(w, snap);
+    pl_snapshot_destroy(&snap);
 }
 
 void pl_report_flags(FILE *f, pl_scene *s)

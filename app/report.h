@@ -12,7 +12,9 @@ void pl_report_materials(FILE *f, const pl_world *w);
 void pl_report_contact_law(FILE *f, const pl_world *w);
 void pl_report_damping(FILE *f, const pl_world *w);
 void pl_report_time_step(FILE *f, pl_world *w);
-void pl_report_fluid(FILE *f, const pl_world *w);
+/* The attached models (fluid ladder) and, with trial_steps > 0, the CPU cost per step of the
+ * grains and of each model, measured on trial_steps steps from a snapshot that is restored. */
+void pl_report_models(FILE *f, pl_world *w, int trial_steps);
 void pl_report_flags(FILE *f, pl_scene *s);
 void pl_report_energy(FILE *f, const pl_world *w);
 

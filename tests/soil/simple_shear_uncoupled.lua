@@ -3,7 +3,7 @@
 -- drained one, and the criterion of simple_shear_check.lua must FAIL: this run passes only if
 -- the pore-pressure rise stays far from the constant-volume drop (worst point > 0.1 sigma'_v0)
 -- while that drop is large. So the check in simple_shear_check.lua fails when the coupling breaks.
-SIMPLE_SHEAR = { rows = "cyclic", cycles = 2, coupling = false }
+SIMPLE_SHEAR = { rows = "cyclic", cycles = 3, coupling = false }
 local scene = dofile(porelab.scene_dir .. "/../../scenes/soil/simple_shear.lua")
 local finish = scene.on_finish
 scene.on_finish = function(w)
