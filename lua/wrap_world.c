@@ -14,6 +14,7 @@ extern const luaL_Reg pl_lua_body_constructors[];
 extern const luaL_Reg pl_lua_material_constructors[];
 extern const luaL_Reg pl_lua_fluid_methods[]; /* wrap_fluid.c (fluid work) */
 extern const luaL_Reg pl_lua_darcy_methods[]; /* wrap_darcy.c (the Darcy model's parameters) */
+extern const luaL_Reg pl_lua_hydrostatic_methods[]; /* wrap_hydrostatic.c (hydrostatic water) */
 
 pl_lua_world *pl_lua_check_world(lua_State *L, int idx)
 {
@@ -418,6 +419,7 @@ void pl_lua_register_world(lua_State *L)
     luaL_setfuncs(L, pl_lua_material_constructors, 0);
     luaL_setfuncs(L, pl_lua_fluid_methods, 0);
     luaL_setfuncs(L, pl_lua_darcy_methods, 0);
+    luaL_setfuncs(L, pl_lua_hydrostatic_methods, 0);
     luaL_setfuncs(L, pl_lua_diag_methods, 0);
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);

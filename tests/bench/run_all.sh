@@ -29,6 +29,11 @@ if [ "$what" = all ] || [ "$what" = fluid ]; then
     echo "== fluid: porelab and FreeFEM++ =="
     "$here/run_freefem.sh" "$build/tests/bench_fluid" | tee "$out/fluid.txt"
   fi
+  if [ -x "$build/tests/bench_water" ]; then
+    echo "== still water: hydrostatic against Darcy on the buoyancy lab =="
+    echo "scene,model,steps,us_per_step,water_us_per_step" > "$out/water.csv"
+    "$build/tests/bench_water" 20000 5 "$out/water.csv" | tee "$out/water.txt"
+  fi
 fi
 if [ "$what" = all ] || [ "$what" = render ]; then
   if [ -x "$build/tests/bench_render" ]; then

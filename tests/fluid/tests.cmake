@@ -40,3 +40,15 @@ if(NOT _pl_fluid_wired EQUAL -1 AND TARGET porelab)
            --steps 200 --every 100 --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/quicksand)
   set_tests_properties(fluid_scene_quicksand PROPERTIES LABELS fluid TIMEOUT 60)
 endif()
+# Hydrostatic water (porelab/hydrostatic.h): kernels without a world.
+pl_add_c_test(test_hydrostatic_kernels SOURCES ${PL_TEST_DIR}/fluid/test_hydrostatic_kernels.c LABEL fluid TIMEOUT 60)
+# Hydrostatic water in a world (floating drafts, the same scene with Darcy, moving level,
+# contact force of a sunk pebble) and its Lua binding; benchmark against Darcy (not a test).
+pl_add_c_test(test_hydrostatic_world SOURCES ${PL_TEST_DIR}/fluid/test_hydrostatic_world.c LABEL fluid TIMEOUT 120)
+add_executable(bench_water ${PL_TEST_DIR}/bench/bench_water.c)
+target_link_libraries(bench_water PRIVATE porelab_engine)
+if(TARGET porelab)
+  add_test(NAME fluid_lua_hydrostatic COMMAND porelab run ${PL_TEST_DIR}/fluid/lua_hydrostatic_api.lua -q
+           --out ${CMAKE_CURRENT_BINARY_DIR}/fluid-out/lua_hydrostatic)
+  set_tests_properties(fluid_lua_hydrostatic PROPERTIES LABELS fluid TIMEOUT 60)
+endif()

@@ -13,6 +13,8 @@
 #  7. the other keys: space plays and pauses, +/- change the steps per frame, layer keys,
 #     colouring (c), fluid field (f), colour range ([ ]), a drag on empty space pans and z
 #     restores, the help (h) is drawn in the window, r restarts at t = 0 (= headless).
+# The scene is the buoyancy lab on the Darcy model (scenes/lab/buoyancy_darcy.lua), which has a
+# pressure field for the fluid keys to change.
 #   test_window_xvfb.sh PORELAB GL_PSNR GL_XCAPTURE SOURCE_DIR OUT_DIR
 set -u
 unset PORELAB_GL_SAMPLES PORELAB_WINDOW_SAMPLES # the goldens and thresholds are for the defaults
@@ -33,7 +35,7 @@ XPID=$!
 export DISPLAY=:$n
 i=0; while [ ! -e /tmp/.X11-unix/X$n ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 
-cp "$SRC/scenes/lab/buoyancy.lua" "$OUT/scene.lua"
+cp "$SRC/scenes/lab/buoyancy_darcy.lua" "$OUT/scene.lua"
 "$P" view "$OUT/scene.lua" --paused --size 640x480 --out "$OUT/v" >"$OUT/view.log" 2>&1 &
 VPID=$!
 W=$(timeout 20 xdotool search --sync --name "porelab - $OUT/scene.lua" | head -1)
@@ -145,7 +147,7 @@ key p
 wait_shots 11
 p8=$("$PSNR" "$OUT/v/screenshot_010.png" "$OUT/v/screenshot_009.png" 200) || fail "the previous scene did not stay ($p8 dB)"
 sleep 1.1
-cp "$SRC/scenes/lab/buoyancy.lua" "$OUT/scene.lua"
+cp "$SRC/scenes/lab/buoyancy_darcy.lua" "$OUT/scene.lua"
 i=0; while ! grep -q '^reload: ok' "$OUT/view.log" && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 grep -q '^reload: ok' "$OUT/view.log" || fail "fixing the file did not reload it"
 echo "file watch: syntax error reported, previous scene kept ($p8 dB), fix reloaded"
