@@ -50,11 +50,30 @@ int pl_render_scene_set_fluid(pl_render_scene *s, const pl_vec2 *nodes, const do
     return 0;
 }
 
+/* A model without a Darcy mesh (hydrostatic water, resolved flow) gives its field sampled on
+   linear triangles (pl_world_field_sample); no velocities. */
+static int capture_generic(pl_render_scene *s, const pl_world *w, int field) {
+    int nt = 0;
+    const int nn = pl_world_field_sample(w, field, NULL, NULL, NULL, 0, 0, &nt);
+    if (nn <= 0 || nt <= 0) return 0;
+    if (reserve_fluid(s, nn, nt)) return -1;
+    int32_t *tri = malloc((size_t)nt * 3u * sizeof *tri);
+    if (!tri) return -1;
+    pl_world_field_sample(w, field, s->fluid_nodes, tri, s->fluid_values, nn, nt, &nt);
+    for (int k = 0; k < 3 * nt; k++) s->fluid_tris[k] = tri[k];
+    free(tri);
+    for (int t = 0; t < nt; t++) s->fluid_velocity[t] = (pl_vec2){0.0, 0.0};
+    s->fluid_conductivity = 0.0;
+    s->fluid_node_count = nn;
+    s->fluid_tri_count = nt;
+    return 0;
+}
+
 int pl_render_scene_capture_fluid(pl_render_scene *s, const pl_world *w, int field) {
     s->fluid_node_count = s->fluid_tri_count = 0;
     s->fluid_field = field;
     int nn = pl_world_fluid_node_count(w), nt = pl_world_fluid_triangle_count(w);
-    if (nn <= 0 || nt <= 0) return 0;
+    if (nn <= 0 || nt <= 0) return capture_generic(s, w, field);
     if (reserve_fluid(s, nn, nt)) return -1;
     double *tmp = malloc((size_t)nt * 2u * sizeof *tmp);
     if (!tmp) return -1;

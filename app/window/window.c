@@ -247,6 +247,23 @@ static void build_hud(win *g)
                 lines[n] = l[n]; n++;
             }
         }
+    } else if (g->rs.fluid_tri_count > 0 && g->rs.fluid_field == PL_FLUID_PRESSURE) {
+        /* a model without a Darcy mesh (hydrostatic water): its field, linear in each triangle */
+        const pl_render_scene *s = &g->rs;
+        for (int t = 0; t < s->fluid_tri_count; t++) {
+            const int *k = s->fluid_tris + 3 * t;
+            const pl_vec2 a = s->fluid_nodes[k[0]], b = s->fluid_nodes[k[1]], c = s->fluid_nodes[k[2]];
+            const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+            if (det == 0) continue;
+            const double l1 = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / det;
+            const double l2 = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
+            if (l1 < -1e-9 || l2 < -1e-9 || l1 + l2 > 1 + 1e-9) continue;
+            const double pr = (1 - l1 - l2) * s->fluid_values[k[0]] + l1 * s->fluid_values[k[1]] +
+                              l2 * s->fluid_values[k[2]];
+            snprintf(l[n], sizeof l[n], "water pressure = %.4g Pa", pr);
+            lines[n] = l[n]; n++;
+            break;
+        }
     }
     pl_hud_panel(h, 3, 2.0 * 1.35 * fs + 2.0 * fs, lines, n, fs, ink, measure, g->gl);
 

@@ -1,6 +1,6 @@
 -- Classroom lab: what floats? (docs/classroom.md, lesson 1). A tank of still water with
 -- three blocks and a handful of pebbles. The water pressure rises with depth (hydrostatic:
--- p = rho g depth, drawn as bands of darker blue every 500 Pa); the pressure around each
+-- p = rho g depth, layer "pressure" with its isobars); the pressure around each
 -- body's outline pushes it up with the weight of the water it displaces (Archimedes). A body
 -- floats when its density is below the water's.
 -- The water is the hydrostatic model (docs/hydrostatic.md): the exact pressure integral over
@@ -45,36 +45,11 @@ local params = {
     set = function(world, v) world:water_set { density = v } end },
 }
 
--- The water body, drawn in bands of 500 Pa (darker with depth) with the isobars labelled.
-local function water(world)
-  local level = world:water_level()
-  local rho_g = world:water_pressure(W / 2, level - 0.1) / 0.1 -- Pa per m of depth
-  local items, step = {}, 500
-  local top, k = level, 1
-  while top > 0 do
-    local bottom = math.max(0, level - k * step / rho_g)
-    local shade = math.min(1, (k - 0.5) * step * 0.9 / (rho_g * H))
-    local r, g, b = 0.80 - 0.62 * shade, 0.90 - 0.45 * shade, 1.0 - 0.22 * shade
-    items[#items + 1] = { polygon = { { 0, bottom }, { W, bottom }, { W, top }, { 0, top } },
-                          fill = { r, g, b, 0.55 }, color = { r, g, b, 0 }, width = 0.1 }
-    if bottom > 0 then
-      items[#items + 1] = { line = { { 0, bottom }, { W, bottom } }, color = { 0.1, 0.25, 0.55, 0.7 }, width = 1 }
-      if k % 2 == 0 then
-        items[#items + 1] = { text = string.format("%.0f Pa", k * step), at = { 0.006, bottom + 0.006 },
-                              anchor = "left", size = 11 }
-      end
-    end
-    top, k = bottom, k + 1
-  end
-  items[#items + 1] = { line = { { 0, level }, { W, level } }, color = "#1f4e9c", width = 2 }
-  return items
-end
-
 return {
   world = w,
   params = params,
   run = { t_end = 4.0, fps = 30 },
   render = { size = { 800, 600 }, camera = { -0.03, -0.02, W + 0.03, 0.44 },
-             layers = "bodies,overlay,title,time", overlay = water,
+             layers = "bodies,pressure,isolines,colorbar,title,time",
              title = "What floats? wood, ice, brick in water" },
 }

@@ -190,6 +190,25 @@ static int test_moving_level(void) {
     ENSURE(fabs(bi.angle) < 1e-6);
     ENSURE_REL((L1 - L0) * width, a_sub, 1e-9);
     ENSURE_REL(a_sub, rho * L * H / 1000, 1e-3);
+    /* the field the renderer draws (pl_world_field_sample, the model interface's field): the
+       water body on linear triangles, p = rho_f g (level - y) exactly at every node */
+    int nt = 0;
+    const int nn = pl_world_field_sample(w, PL_FLUID_PRESSURE, NULL, NULL, NULL, 0, 0, &nt);
+    ENSURE(nn >= 3 && nt >= 1);
+    pl_vec2 xy[16];
+    int32_t tri[48];
+    double val[16];
+    ENSURE(nn <= 16 && nt <= 16);
+    ENSURE(pl_world_field_sample(w, PL_FLUID_PRESSURE, xy, tri, val, 16, 16, &nt) == nn);
+    double area = 0;
+    for (int i = 0; i < nn; i++) ENSURE_NEAR(val[i], 1000 * 9.81 * (L1 - xy[i].y), 1e-9 * 1000 * 9.81);
+    for (int t = 0; t < nt; t++) {
+        const pl_vec2 a = xy[tri[3 * t]], b2 = xy[tri[3 * t + 1]], c = xy[tri[3 * t + 2]];
+        area += 0.5 * ((b2.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b2.y - a.y));
+    }
+    fprintf(stderr, "  drawn field: %d nodes, %d triangles, area %.9e m^2 (water body %.9e)\n", nn, nt, area,
+            width * L1);
+    ENSURE_REL(area, width * L1, 1e-12); /* the tank's bottom is at y = 0 */
     pl_world_destroy(&w);
     return 0;
 }

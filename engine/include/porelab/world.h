@@ -264,6 +264,14 @@ void pl_world_set_file_writer(pl_world *w, const pl_file_writer *writer);
 /// short name ("darcy", "hydrostatic"), one-line description, and the CPU seconds they spent so
 /// far with the number of their updates (for `porelab info`).
 int pl_world_model_count(const pl_world *w);
+/// A field of the attached models sampled on linear triangles for drawing, from the first
+/// model that has it: quantity is a pl_fluid_node_field (porelab/fluid.h: PL_FLUID_PRESSURE,
+/// ...). A P2, boundary-element or analytic field arrives as nodes, linear sub-triangles and
+/// one value per node, so the renderer needs no change for a new model. Returns the node count
+/// (0: none) and sets *nt; fills xy, tri (3 node indices per triangle) and value only when they
+/// fit in cap_nodes / cap_tris (call with 0 caps to size the buffers). Read-only.
+int pl_world_field_sample(const pl_world *w, int quantity, pl_vec2 *xy, int32_t *tri, double *value, int cap_nodes,
+                          int cap_tris, int *nt);
 const char *pl_world_model_name(const pl_world *w, int k);
 const char *pl_world_model_label(const pl_world *w, int k);
 double pl_world_model_cost(const pl_world *w, int k, long *calls);

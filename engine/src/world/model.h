@@ -81,6 +81,12 @@ typedef struct pl_model_class {
        the same scene. */
     pl_status (*save)(const void *self, pl_image *img);
     pl_status (*load)(void *self, pl_world *w, pl_image *img);
+    /* The model's field for drawing, sampled on linear triangles: quantity is a
+       pl_fluid_node_field (PL_FLUID_PRESSURE, ...). Returns the node count (0: no such field) and
+       sets *nt; writes xy, tri (3 per triangle) and value only when they fit in cap_nodes and
+       cap_tris (call with 0 caps to size the buffers). Read-only. May be NULL. */
+    int (*field)(const void *self, const pl_world *w, int quantity, pl_vec2 *xy, int32_t *tri, double *value,
+                 int cap_nodes, int cap_tris, int *nt);
     /* Seconds of CPU spent per call of advance + loads so far (for `porelab info`), may be NULL. */
     double (*cost)(const void *self, long *calls);
     void (*destroy)(void *self);

@@ -176,3 +176,15 @@ double pl_world_model_cost(const pl_world *w, int k, long *calls) {
     if (k < 0 || k >= w->model_n || !w->models[k].cls->cost) return 0;
     return w->models[k].cls->cost(w->models[k].self, calls);
 }
+
+int pl_world_field_sample(const pl_world *w, int quantity, pl_vec2 *xy, int32_t *tri, double *value, int cap_nodes,
+                          int cap_tris, int *nt) {
+    *nt = 0;
+    for (int k = 0; k < w->model_n; k++) {
+        const pl_model_slot *m = &w->models[k];
+        if (!m->cls->field) continue;
+        const int nn = m->cls->field(m->self, w, quantity, xy, tri, value, cap_nodes, cap_tris, nt);
+        if (nn > 0) return nn;
+    }
+    return 0;
+}

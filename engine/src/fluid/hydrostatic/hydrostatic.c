@@ -4,6 +4,7 @@
  * hydrostatic_kernels.c. */
 #define _POSIX_C_SOURCE 200809L
 #include "fluid/hydrostatic/hydrostatic_internal.h"
+#include "porelab/fluid.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -126,6 +127,36 @@ int pl__hydrostatic_field(void *self, pl_vec2 gravity, pl_field_sample *out) {
     int nt = 0;
     const int nn = pl_hs_field(&wt, m->def.level, m->fxy, m->ftri, m->fval, &nt);
     *out = (pl_field_sample){nn, nt, m->fxy, m->ftri, m->fval};
+    return nn;
+}
+
+/* The water body's field for drawing (pl_model_class.field): pressure, pressure head, total
+   head (uniform in still water) or excess pressure (zero in still water). */
+static int hs_field(const void *self, const pl_world *w, int quantity, pl_vec2 *xy, int32_t *tri, double *value,
+                    int cap_nodes, int cap_tris, int *nt) {
+    const pl_hydrostatic *m = self;
+    const pl_hs_water wt = pl_hs_water_make(&m->def, pl__world_gravity(w));
+    pl_vec2 fxy[8];
+    int32_t ftri[18];
+    double fval[8];
+    int n_t = 0;
+    const int nn = pl_hs_field(&wt, m->def.level, fxy, ftri, fval, &n_t);
+    *nt = n_t;
+    if (nn <= 0 || quantity < PL_FLUID_HEAD || quantity > PL_FLUID_EXCESS_PRESSURE) return 0;
+    if (nn > cap_nodes || n_t > cap_tris || !xy || !tri || !value) return nn;
+    const double rg = wt.rho * wt.g;
+    for (int i = 0; i < nn; i++) {
+        xy[i] = fxy[i];
+        const double p = fval[i];
+        const double z = fxy[i].x * wt.up.x + fxy[i].y * wt.up.y;
+        switch (quantity) {
+        case PL_FLUID_PRESSURE: value[i] = p; break;
+        case PL_FLUID_PRESSURE_HEAD: value[i] = rg > 0 ? p / rg : 0; break;
+        case PL_FLUID_HEAD: value[i] = (rg > 0 ? p / rg : 0) + z; break;
+        default: value[i] = 0; break; /* excess pressure: still water */
+        }
+    }
+    for (int k = 0; k < 3 * n_t; k++) tri[k] = ftri[k];
     return nn;
 }
 
@@ -275,6 +306,7 @@ const pl_model_class pl_hydrostatic_class = {
     .snapshot_free = hs_snapshot_free,
     .save = hs_save,
     .load = hs_load,
+    .field = hs_field,
     .cost = hs_cost,
     .destroy = hs_destroy,
 };
