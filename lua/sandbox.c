@@ -402,6 +402,7 @@ static int sandbox_require(lua_State *L)
                                 helper_names(L), rel, rel2);
         lua_pushstring(L, found); /* 5 */
     }
+    lua_pushvalue(L, 4);
     lua_pushvalue(L, 1);
     lua_pushvalue(L, 5);
     lua_call(L, 2, 1);

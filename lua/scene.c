@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 struct pl_scene {
@@ -23,15 +24,191 @@ struct pl_scene {
     int declarative;
     char error[4096];
     char traceback[8192];
+    /* limits (0: none) */
+    double max_cpu;      /* s per call into the scene */
+    size_t mem_limit;    /* bytes of Lua data */
+    /* accounting */
+    size_t mem_used;
+    int mem_over;        /* past the limit by a small allocation: the hook raises the error */
+    int mem_refused;     /* an allocation was refused */
+    char mem_where[PATH_MAX + 32]; /* "file:line: " where it was refused, or "" */
+    int depth;           /* nesting of protected calls */
+    double cpu_deadline; /* thread CPU time at which the current call runs out */
+    int cpu_hit;         /* the current call ran out: every instruction raises again */
+    int in_main;         /* running the main chunk: the return hook notes its line */
+    int return_line;     /* line of the main chunk's final return, 0 when unknown */
+    char result_where[PATH_MAX + 32];
 };
+
+/* Copies src into dst with control characters shown as \xNN (terminal escape codes in a
+ * scene's message must not reach the terminal); newlines and tabs are kept. */
+static void sanitize(char *dst, size_t n, const char *src)
+{
+    size_t k = 0;
+    for (const unsigned char *p = (const unsigned char *)src; *p && k + 5 < n; p++) {
+        int c1 = p[0] == 0xc2 && p[1] >= 0x80 && p[1] <= 0x9f; /* UTF-8 C1 control */
+        if ((*p < 0x20 && *p != '\n' && *p != '\t') || *p == 0x7f || c1) {
+            k += (size_t)snprintf(dst + k, n - k, "\\x%02x", c1 ? p[1] : *p);
+            if (c1) p++;
+        } else {
+            dst[k++] = (char)*p;
+        }
+    }
+    dst[k] = '\0';
+}
 
 void pl_scene_set_error(pl_scene *s, const char *fmt, ...)
 {
+    char raw[sizeof s->error];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(s->error, sizeof s->error, fmt, ap);
+    vsnprintf(raw, sizeof raw, fmt, ap);
     va_end(ap);
+    sanitize(s->error, sizeof s->error, raw);
 }
+
+/* ------------------------------------------------------------------ limits */
+
+static double thread_cpu(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+#define HOOK_COUNT 10000          /* instructions between CPU-time checks */
+#define MEM_SMALL (32u << 20)     /* allocations up to this may pass the limit a little ... */
+#define MEM_HEADROOM (64u << 20)  /* ... by this much, until the next instruction raises */
+#define MEM_SAFE_WHERE (32u << 20) /* larger requests are never the Lua stack: safe to locate */
+
+/* Pushes "file:line: " of the innermost scene line; the scene path alone when none. */
+static void push_where(pl_scene *s, lua_State *L, int level)
+{
+    if (!pl_lua_where_from(L, level)) lua_pushfstring(L, "%s: ", s->ctx.scene_path);
+}
+
+static void scene_hook(lua_State *L, lua_Debug *ar);
+
+static void set_hook(pl_scene *s, int count)
+{
+    int mask = s->in_main ? LUA_MASKRET : 0;
+    if (s->max_cpu > 0 || s->mem_limit > 0 || count == 1) mask |= LUA_MASKCOUNT;
+    lua_sethook(s->L, mask ? scene_hook : NULL, mask, count);
+}
+
+static void scene_hook(lua_State *L, lua_Debug *ar)
+{
+    void *ud;
+    lua_getallocf(L, &ud);
+    pl_scene *s = ud;
+    if (ar->event == LUA_HOOKRET) {
+        lua_Debug caller;
+        if (s->in_main && L == s->L && !lua_getstack(L, 1, &caller) && lua_getinfo(L, "l", ar))
+            s->return_line = ar->currentline; /* the main chunk returns */
+        return;
+    }
+    if (s->mem_over) {
+        s->mem_over = 0;
+        set_hook(s, HOOK_COUNT);
+        push_where(s, L, 0);
+        lua_pushfstring(L, "out of memory: the scene's Lua data passed the limit of %d MB "
+                        "(--max-memory MB raises it; --trust lifts the sandbox's default)",
+                        (int)(s->mem_limit >> 20));
+        lua_concat(L, 2);
+        lua_error(L);
+    }
+    if (s->max_cpu > 0 && (s->cpu_hit || thread_cpu() > s->cpu_deadline)) {
+        if (!s->cpu_hit) set_hook(s, 1); /* caught by pcall? raised again at once */
+        s->cpu_hit = 1;
+        push_where(s, L, 0);
+        char secs[32];
+        snprintf(secs, sizeof secs, "%g", s->max_cpu);
+        lua_pushfstring(L, "the scene ran out of CPU time: more than %s s %s (--max-cpu "
+                        "SECONDS raises it; --trust lifts the sandbox's default)", secs,
+                        s->in_main ? "running the scene file"
+                                   : "in one call from porelab into the scene (a hook)");
+        lua_concat(L, 2);
+        lua_error(L);
+    }
+}
+
+/* The Lua allocator: counts the Lua data and refuses to pass mem_limit. */
+static void *scene_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
+{
+    pl_scene *s = ud;
+    if (!ptr) osize = 0; /* osize is then the kind of object */
+    if (nsize == 0) {
+        free(ptr);
+        s->mem_used -= osize;
+        return NULL;
+    }
+    if (s->mem_limit > 0 && nsize > osize && s->mem_used + (nsize - osize) > s->mem_limit) {
+        size_t grow = nsize - osize;
+        if (grow <= MEM_SMALL && s->mem_used + grow <= s->mem_limit + MEM_HEADROOM && s->L &&
+            s->depth > 0) {
+            /* let it through; the next Lua instruction raises a located error */
+            if (!s->mem_over) {
+                s->mem_over = 1;
+                lua_sethook(s->L, scene_hook, LUA_MASKCOUNT | (s->in_main ? LUA_MASKRET : 0), 1);
+            }
+        } else {
+            if (!s->mem_refused && s->L && grow > MEM_SAFE_WHERE) {
+                /* a large block (a string or table, never the stack): the call stack is
+                 * consistent, so its scene line can be read */
+                lua_Debug ar;
+                for (int level = 0; lua_getstack(s->L, level, &ar); level++) {
+                    lua_getinfo(s->L, "Sl", &ar);
+                    if (ar.currentline > 0 && ar.source[0] == '@') {
+                        snprintf(s->mem_where, sizeof s->mem_where, "%s:%d: ", ar.short_src,
+                                 ar.currentline);
+                        break;
+                    }
+                }
+            }
+            s->mem_refused = 1;
+            return NULL;
+        }
+    }
+    void *p = realloc(ptr, nsize);
+    if (!p) {
+        s->mem_refused = 1;
+        return NULL;
+    }
+    s->mem_used += nsize - osize;
+    return p;
+}
+
+void pl_scene_set_limits(pl_scene *s, double max_cpu, double max_memory_mb)
+{
+    if (max_cpu > 0) s->max_cpu = max_cpu;
+    else if (max_cpu < 0) s->max_cpu = 0;
+    if (max_memory_mb > 0) s->mem_limit = (size_t)(max_memory_mb * 1048576.0);
+    else if (max_memory_mb < 0) s->mem_limit = 0;
+}
+
+static int panic(lua_State *L)
+{
+    const char *msg = lua_tostring(L, -1);
+    fprintf(stderr, "porelab: PANIC: unprotected error in call to Lua API (%s)\n",
+            msg ? msg : "error object is not a string");
+    return 0;
+}
+
+/* Length of a leading "chunk:line: " (as Lua prefixes errors raised in scene code), 0 when
+ * msg does not start with one. */
+static size_t location_len(const char *msg)
+{
+    const char *colon = strchr(msg, ':');
+    if (!colon || colon == msg || colon[1] < '0' || colon[1] > '9') return 0;
+    const char *p = colon + 1;
+    while (*p >= '0' && *p <= '9') p++;
+    if (*p != ':') return 0;
+    p++;
+    if (*p == ' ') p++;
+    return (size_t)(p - msg);
+}
+
+static int has_location(const char *msg) { return location_len(msg) > 0; }
 
 /* Message handler: keeps the message as the one-line error and the traceback apart. */
 static int message_handler(lua_State *L)
@@ -45,20 +222,18 @@ static int message_handler(lua_State *L)
             msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
     }
     luaL_traceback(L, L, NULL, 1);
-    snprintf(s->traceback, sizeof s->traceback, "%s", lua_tostring(L, -1));
+    sanitize(s->traceback, sizeof s->traceback, lua_tostring(L, -1));
     lua_pop(L, 1);
+    /* An error without a scene line (raised in C: "C stack overflow", require, out of
+     * memory; or located in an embedded helper, "porelab.mimes:246: ...") gets the line of
+     * the innermost scene frame, the line the user wrote. */
+    if ((!has_location(msg) || strncmp(msg, "porelab.", 8) == 0) && pl_lua_where_from(L, 1)) {
+        lua_pushstring(L, msg);
+        lua_concat(L, 2);
+        return 1;
+    }
     lua_pushstring(L, msg);
     return 1;
-}
-
-/* 1 when msg starts with "chunk:line:" (as Lua prefixes errors raised in scene code). */
-static int has_location(const char *msg)
-{
-    const char *colon = strchr(msg, ':');
-    if (!colon || colon == msg || colon[1] < '0' || colon[1] > '9') return 0;
-    const char *p = colon + 1;
-    while (*p >= '0' && *p <= '9') p++;
-    return *p == ':';
 }
 
 /* Calls the function below nargs arguments with the handler; on error stores the message
@@ -70,17 +245,59 @@ static int protected_call(pl_scene *s, int nargs, int nresults)
     lua_pushlightuserdata(L, s);
     lua_pushcclosure(L, message_handler, 1);
     lua_insert(L, base);
+    if (s->depth++ == 0) { /* each call from porelab into the scene has its own budget */
+        s->cpu_hit = 0;
+        s->mem_over = 0;
+        s->mem_refused = 0;
+        s->mem_where[0] = '\0';
+        if (s->max_cpu > 0) s->cpu_deadline = thread_cpu() + s->max_cpu;
+        set_hook(s, HOOK_COUNT);
+    }
     int rc = lua_pcall(L, nargs, nresults, base);
+    if (--s->depth == 0) {
+        s->in_main = 0;
+        s->cpu_hit = 0;
+        set_hook(s, HOOK_COUNT);
+    }
     lua_remove(L, base);
     if (rc == LUA_OK) return 0;
     const char *msg = lua_tostring(L, -1);
     if (!msg) msg = "unknown error";
-    if (has_location(msg))
+    if (s->mem_refused && (rc == LUA_ERRMEM || strstr(msg, "not enough memory"))) {
+        char where[sizeof s->mem_where];
+        if (s->mem_where[0])
+            snprintf(where, sizeof where, "%s", s->mem_where);
+        else if (has_location(msg))
+            snprintf(where, sizeof where, "%.*s", (int)location_len(msg), msg);
+        else
+            snprintf(where, sizeof where, "%s: ", s->ctx.scene_path);
+        if (s->mem_limit > 0)
+            pl_scene_set_error(s, "%sout of memory: the scene's Lua data would pass the limit "
+                               "of %d MB (--max-memory MB raises it; --trust lifts the "
+                               "sandbox's default)", where, (int)(s->mem_limit >> 20));
+        else
+            pl_scene_set_error(s, "%sout of memory (the system refused %s)", where,
+                               "to give the scene's Lua data more memory");
+    } else if (has_location(msg)) {
         pl_scene_set_error(s, "%s", msg);
-    else
-        pl_scene_set_error(s, "%s: %s", s->ctx.scene_path, msg);
+    } else {
+        /* raised outside the scene's code: by the checks on the returned table (render,
+         * run, params, hooks) */
+        pl_scene_set_error(s, "%s: %s", pl_scene_result_location(s), msg);
+    }
     lua_pop(L, 1);
     return -1;
+}
+
+const char *pl_scene_result_location(const pl_scene *s)
+{
+    pl_scene *m = (pl_scene *)s;
+    if (s->return_line > 0)
+        snprintf(m->result_where, sizeof m->result_where, "%s:%d", s->ctx.scene_path,
+                 s->return_line);
+    else
+        snprintf(m->result_where, sizeof m->result_where, "%s", s->ctx.scene_path);
+    return s->result_where;
 }
 
 pl_scene *pl_scene_create(const pl_scene_options *opt)
@@ -98,11 +315,13 @@ pl_scene *pl_scene_create(const pl_scene_options *opt)
     else
         pl_path_join(s->ctx.out_dir, PATH_MAX, cwd, opt->out_dir);
     s->ctx.trust = opt->trust;
-    s->L = luaL_newstate();
+    if (!opt->trust) pl_scene_set_limits(s, PL_SCENE_DEFAULT_MAX_CPU, PL_SCENE_DEFAULT_MAX_MEMORY);
+    s->L = lua_newstate(scene_alloc, s);
     if (!s->L) {
         free(s);
         return NULL;
     }
+    lua_atpanic(s->L, panic);
     pl_lua_set_context(s->L, &s->ctx);
     pl_lua_open_porelab(s->L);
     pl_lua_install_sandbox(s->L);
@@ -212,22 +431,53 @@ static int check_result(lua_State *L)
     return 0;
 }
 
+/* The return hook gave the line where the main chunk's return instruction is, the end of
+ * the statement (the closing '}' of a returned table). Walks back from there to the line
+ * that starts with "return" at the left margin, where scenes write their final return. */
+static void find_return_statement(pl_scene *s)
+{
+    if (s->return_line <= 0) return;
+    FILE *f = fopen(s->ctx.scene_path, "r");
+    if (!f) return;
+    char buf[512];
+    int line = 1, found = 0, line_start = 1;
+    while (line <= s->return_line && fgets(buf, sizeof buf, f)) {
+        if (line_start && strncmp(buf, "return", 6) == 0 &&
+            (buf[6] == '\0' || strchr(" \t{(\r\n", buf[6])))
+            found = line;
+        line_start = strchr(buf, '\n') != NULL;
+        if (line_start) line++;
+    }
+    fclose(f);
+    if (found) s->return_line = found;
+}
+
 int pl_scene_load(pl_scene *s)
 {
     lua_State *L = s->L;
-    FILE *f = fopen(s->ctx.scene_path, "r");
+    FILE *f = fopen(s->ctx.scene_path, "rb");
     if (!f) {
         pl_scene_set_error(s, "cannot open scene '%s': %s", s->ctx.scene_path,
                            strerror(errno));
         return -1;
     }
+    int first = fgetc(f);
     fclose(f);
+    if (first == LUA_SIGNATURE[0]) {
+        pl_scene_set_error(s, "%s:1: the scene is a precompiled (binary) chunk; scenes must "
+                           "be Lua source text", s->ctx.scene_path);
+        return -1;
+    }
     if (luaL_loadfilex(L, s->ctx.scene_path, "t") != LUA_OK) {
-        pl_scene_set_error(s, "%s", lua_tostring(L, -1));
+        const char *msg = lua_tostring(L, -1);
+        if (has_location(msg)) pl_scene_set_error(s, "%s", msg);
+        else pl_scene_set_error(s, "%s:1: %s", s->ctx.scene_path, msg ? msg : "cannot load");
         lua_pop(L, 1);
         return -1;
     }
+    s->in_main = 1; /* the return hook notes the line of the final return */
     if (protected_call(s, 0, 1) != 0) return -1;
+    find_return_statement(s);
     if (lua_isnil(L, -1)) { /* imperative script: describe its last world, if any */
         lua_pop(L, 1);
         pl_lua_scene_push_last_world(L);
@@ -352,7 +602,8 @@ int pl_scene_set_param(pl_scene *s, int i, double value)
     push_params(s);
     if (!lua_istable(L, -1) || lua_geti(L, -1, i + 1) != LUA_TTABLE ||
         lua_getfield(L, -1, "set") != LUA_TFUNCTION || s->world_ref == LUA_NOREF) {
-        pl_scene_set_error(s, "%s: params[%d]: no set function", s->ctx.scene_path, i + 1);
+        pl_scene_set_error(s, "%s: params[%d]: no set function", pl_scene_result_location(s),
+                           i + 1);
         lua_settop(L, top);
         return -1;
     }
@@ -388,7 +639,7 @@ int pl_scene_call_hook(pl_scene *s, const char *name, long long arg)
     }
     if (t != LUA_TFUNCTION) {
         pl_scene_set_error(s, "%s: scene result: %s must be a function (got %s)",
-                           s->ctx.scene_path, name, lua_typename(s->L, t));
+                           pl_scene_result_location(s), name, lua_typename(s->L, t));
         lua_pop(s->L, 1);
         return -1;
     }

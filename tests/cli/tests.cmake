@@ -49,12 +49,12 @@ pl_cli_test(bad_missing_file RC 1 ARGS run ${PL_BAD}/no_such_scene.lua --quiet
 pl_cli_test(bad_engine_error RC 1 ARGS run ${PL_BAD}/engine_error.lua --quiet
   MATCH "engine_error.lua:4: polygon: .*counter-clockwise")
 pl_cli_test(bad_return_value RC 1 ARGS run ${PL_BAD}/bad_return.lua --quiet
-  MATCH "bad_return.lua: the scene must return nothing .*\\(got number\\)")
+  MATCH "bad_return.lua:2: the scene must return nothing .*\\(got number\\)")
 pl_cli_test(bad_render_layer RC 1 ARGS run ${PL_BAD}/bad_render.lua --quiet
-  MATCH "bad_render.lua: render: layers: unknown layer 'force'")
+  MATCH "bad_render.lua:5: render: layers: unknown layer 'force'")
 pl_cli_test(bad_overlay RC 1
   ARGS run ${PL_BAD}/bad_overlay.lua --quiet --out ${PL_CLI_OUT}/bad_overlay
-  MATCH "bad_overlay.lua: render: overlay\\[2\\]: radius must be > 0 .*\\(got -1\\)"
+  MATCH "bad_overlay.lua:5: render: overlay\\[2\\]: radius must be > 0 .*\\(got -1\\)"
   MATCH2 "run stopped at t = 0 s \\(step 0 of")
 pl_cli_test(run_unstable RC 1
   ARGS run ${PL_BAD}/unstable.lua --quiet --out ${PL_CLI_OUT}/unstable
@@ -175,7 +175,7 @@ pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --ou
 pl_cli_test(scene_params RC 0 ARGS run tests/cli/lua/params.lua --quiet --out ${PL_CLI_OUT}/params
   EXPECT_FILE ${PL_CLI_OUT}/params/frame_000001.png)
 pl_cli_test(bad_params RC 1 ARGS run ${PL_BAD}/bad_params.lua --quiet --out ${PL_CLI_OUT}/bad_params
-  MATCH "^porelab: tests/cli/bad/bad_params.lua: params\\[2\\] \\(friction\\): max must be > min \\(got min 0.9, max 0.1\\)\n$")
+  MATCH "^porelab: tests/cli/bad/bad_params.lua:5: params\\[2\\] \\(friction\\): max must be > min \\(got min 0.9, max 0.1\\)\n$")
 
 # A still replays the run's on_frame hooks, so it equals the run's frame at the same time.
 add_test(NAME cli_still_matches_run COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
