@@ -31,10 +31,13 @@ static void check_name(lua_State *L, const char *path, const char *fn)
         break;
     }
     for (const unsigned char *p = (const unsigned char *)path; *p; p++)
-        if (*p < 0x20 || *p == 0x7f)
-            pl_lua_error(L, "%s: the file name contains a control character (byte 0x%02x at "
-                         "position %d); file names must be plain text", fn, *p,
+        if (*p < 0x20 || *p == 0x7f) {
+            char byte[8]; /* lua_pushfstring has no %x */
+            snprintf(byte, sizeof byte, "0x%02x", *p);
+            pl_lua_error(L, "%s: the file name contains a control character (byte %s at "
+                         "position %d); file names must be plain text", fn, byte,
                          (int)((const char *)p - path) + 1);
+        }
 }
 
 /* 1 when the last component of path is empty, "." or "..": such a path names a folder. */
