@@ -1,5 +1,5 @@
 /* Scene loader: one Lua state per scene, run under lua_pcall with a traceback handler. */
-#define _XOPEN_SOURCE 700
+#define _GNU_SOURCE /* timer_create with SIGEV_THREAD_ID */
 #include "scene.h"
 #include "context.h"
 #include "lua_util.h"
@@ -13,8 +13,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
+#include <sys/syscall.h>
 #include <time.h>
 #include <unistd.h>
+
+#if defined(__linux__) && defined(SIGEV_THREAD_ID)
+#define PL_CPU_TIMER 1 /* a CPU-time timer on the Lua thread; else a count hook polls */
+#endif
 
 struct pl_scene {
     lua_State *L;
@@ -35,8 +41,14 @@ struct pl_scene {
     int depth;           /* nesting of protected calls */
     double cpu_deadline; /* thread CPU time at which the current call runs out */
     int cpu_hit;         /* the current call ran out: every instruction raises again */
-    int in_main;         /* running the main chunk: the return hook notes its line */
-    int return_line;     /* line of the main chunk's final return, 0 when unknown */
+    volatile sig_atomic_t cpu_fired; /* the CPU timer went off */
+    int cpu_polling;     /* no timer: the count hook checks the clock */
+    int timer_armed;
+#ifdef PL_CPU_TIMER
+    timer_t timer;
+#endif
+    int in_main;         /* running the scene file (for messages) */
+    int return_line;     /* line of the scene's final return, 0 when unknown */
     char result_where[PATH_MAX + 32];
 };
 
@@ -89,24 +101,23 @@ static void push_where(pl_scene *s, lua_State *L, int level)
 
 static void scene_hook(lua_State *L, lua_Debug *ar);
 
+/* Installs the hook the limits need: none while the CPU timer runs (no cost per
+ * instruction), a count hook when the clock must be polled, or count 1 to raise an error
+ * at the next instruction. */
 static void set_hook(pl_scene *s, int count)
 {
-    int mask = s->in_main ? LUA_MASKRET : 0;
-    if (s->max_cpu > 0 || s->mem_limit > 0 || count == 1) mask |= LUA_MASKCOUNT;
-    lua_sethook(s->L, mask ? scene_hook : NULL, mask, count);
+    if (count == 1 || s->cpu_polling)
+        lua_sethook(s->L, scene_hook, LUA_MASKCOUNT, count);
+    else
+        lua_sethook(s->L, NULL, 0, 0);
 }
 
 static void scene_hook(lua_State *L, lua_Debug *ar)
 {
+    (void)ar;
     void *ud;
     lua_getallocf(L, &ud);
     pl_scene *s = ud;
-    if (ar->event == LUA_HOOKRET) {
-        lua_Debug caller;
-        if (s->in_main && L == s->L && !lua_getstack(L, 1, &caller) && lua_getinfo(L, "l", ar))
-            s->return_line = ar->currentline; /* the main chunk returns */
-        return;
-    }
     if (s->mem_over) {
         s->mem_over = 0;
         set_hook(s, HOOK_COUNT);
@@ -117,8 +128,10 @@ static void scene_hook(lua_State *L, lua_Debug *ar)
         lua_concat(L, 2);
         lua_error(L);
     }
-    if (s->max_cpu > 0 && (s->cpu_hit || thread_cpu() > s->cpu_deadline)) {
-        if (!s->cpu_hit) set_hook(s, 1); /* caught by pcall? raised again at once */
+    if (s->max_cpu > 0 && s->depth > 0 &&
+        (s->cpu_hit || s->cpu_fired || (s->cpu_polling && thread_cpu() > s->cpu_deadline))) {
+        /* stays armed at count 1: a pcall that catches this gets it again at once */
+        lua_sethook(L, scene_hook, LUA_MASKCOUNT, 1);
         s->cpu_hit = 1;
         push_where(s, L, 0);
         char secs[32];
@@ -130,6 +143,77 @@ static void scene_hook(lua_State *L, lua_Debug *ar)
         lua_concat(L, 2);
         lua_error(L);
     }
+    if (!s->cpu_hit) set_hook(s, HOOK_COUNT); /* a wake-up with nothing to report */
+}
+
+#ifdef PL_CPU_TIMER
+static pl_scene *volatile timed_scene; /* the scene whose CPU timer is armed */
+
+/* SIGVTALRM from the CPU timer, delivered to the Lua thread: lua_sethook is safe to call
+ * from a signal handler (lua.c stops scripts on Ctrl-C the same way). */
+static void cpu_alarm(int sig)
+{
+    (void)sig;
+    pl_scene *s = timed_scene;
+    if (!s || !s->L) return;
+    s->cpu_fired = 1;
+    lua_sethook(s->L, scene_hook, LUA_MASKCOUNT, 1);
+}
+#endif
+
+/* Starts the CPU budget of one call into the scene. */
+static void arm_cpu(pl_scene *s)
+{
+    s->cpu_hit = 0;
+    s->cpu_fired = 0;
+    s->cpu_polling = 0;
+    if (s->max_cpu <= 0) return;
+    s->cpu_deadline = thread_cpu() + s->max_cpu;
+#ifdef PL_CPU_TIMER
+    static int installed;
+    if (!installed) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = cpu_alarm;
+        sa.sa_flags = SA_RESTART;
+        sigemptyset(&sa.sa_mask);
+        installed = sigaction(SIGVTALRM, &sa, NULL) == 0;
+    }
+    struct sigevent ev;
+    memset(&ev, 0, sizeof ev);
+    ev.sigev_notify = SIGEV_THREAD_ID;
+    ev.sigev_signo = SIGVTALRM;
+    ev._sigev_un._tid = (pid_t)syscall(SYS_gettid);
+    if (installed && timer_create(CLOCK_THREAD_CPUTIME_ID, &ev, &s->timer) == 0) {
+        struct itimerspec it;
+        memset(&it, 0, sizeof it);
+        it.it_value.tv_sec = (time_t)s->max_cpu;
+        it.it_value.tv_nsec = (long)((s->max_cpu - (double)(time_t)s->max_cpu) * 1e9);
+        if (it.it_value.tv_sec == 0 && it.it_value.tv_nsec == 0) it.it_value.tv_nsec = 1;
+        timed_scene = s;
+        if (timer_settime(s->timer, 0, &it, NULL) == 0) {
+            s->timer_armed = 1;
+            return;
+        }
+        timed_scene = NULL;
+        timer_delete(s->timer);
+    }
+#endif
+    s->cpu_polling = 1;
+}
+
+static void disarm_cpu(pl_scene *s)
+{
+#ifdef PL_CPU_TIMER
+    if (s->timer_armed) {
+        timed_scene = NULL;
+        timer_delete(s->timer);
+        s->timer_armed = 0;
+    }
+#endif
+    s->cpu_polling = 0;
+    s->cpu_hit = 0;
+    s->cpu_fired = 0;
 }
 
 /* The Lua allocator: counts the Lua data and refuses to pass mem_limit. */
@@ -149,7 +233,7 @@ static void *scene_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
             /* let it through; the next Lua instruction raises a located error */
             if (!s->mem_over) {
                 s->mem_over = 1;
-                lua_sethook(s->L, scene_hook, LUA_MASKCOUNT | (s->in_main ? LUA_MASKRET : 0), 1);
+                lua_sethook(s->L, scene_hook, LUA_MASKCOUNT, 1);
             }
         } else {
             if (!s->mem_refused && s->L && grow > MEM_SAFE_WHERE) {
@@ -246,17 +330,16 @@ static int protected_call(pl_scene *s, int nargs, int nresults)
     lua_pushcclosure(L, message_handler, 1);
     lua_insert(L, base);
     if (s->depth++ == 0) { /* each call from porelab into the scene has its own budget */
-        s->cpu_hit = 0;
         s->mem_over = 0;
         s->mem_refused = 0;
         s->mem_where[0] = '\0';
-        if (s->max_cpu > 0) s->cpu_deadline = thread_cpu() + s->max_cpu;
+        arm_cpu(s);
         set_hook(s, HOOK_COUNT);
     }
     int rc = lua_pcall(L, nargs, nresults, base);
     if (--s->depth == 0) {
+        disarm_cpu(s);
         s->in_main = 0;
-        s->cpu_hit = 0;
         set_hook(s, HOOK_COUNT);
     }
     lua_remove(L, base);
@@ -431,17 +514,16 @@ static int check_result(lua_State *L)
     return 0;
 }
 
-/* The return hook gave the line where the main chunk's return instruction is, the end of
- * the statement (the closing '}' of a returned table). Walks back from there to the line
- * that starts with "return" at the left margin, where scenes write their final return. */
+/* The line of the scene's final return (the statement that returned the result table):
+ * at the top level `return` must be the last statement, and scenes write it at the left
+ * margin, so it is the last line that starts with "return". */
 static void find_return_statement(pl_scene *s)
 {
-    if (s->return_line <= 0) return;
     FILE *f = fopen(s->ctx.scene_path, "r");
     if (!f) return;
     char buf[512];
     int line = 1, found = 0, line_start = 1;
-    while (line <= s->return_line && fgets(buf, sizeof buf, f)) {
+    while (fgets(buf, sizeof buf, f)) {
         if (line_start && strncmp(buf, "return", 6) == 0 &&
             (buf[6] == '\0' || strchr(" \t{(\r\n", buf[6])))
             found = line;
@@ -449,7 +531,7 @@ static void find_return_statement(pl_scene *s)
         if (line_start) line++;
     }
     fclose(f);
-    if (found) s->return_line = found;
+    s->return_line = found;
 }
 
 int pl_scene_load(pl_scene *s)
@@ -475,7 +557,7 @@ int pl_scene_load(pl_scene *s)
         lua_pop(L, 1);
         return -1;
     }
-    s->in_main = 1; /* the return hook notes the line of the final return */
+    s->in_main = 1;
     if (protected_call(s, 0, 1) != 0) return -1;
     find_return_statement(s);
     if (lua_isnil(L, -1)) { /* imperative script: describe its last world, if any */
