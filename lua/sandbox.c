@@ -271,6 +271,22 @@ static int load_text_only(lua_State *L)
     return call_original(L, 1);
 }
 
+/* setmetatable(t, mt) without a __gc field: Lua runs finalizers with hooks off, so an
+ * endless loop in one could not be stopped by the CPU limit. */
+static int setmetatable_checked(lua_State *L)
+{
+    if (lua_type(L, 2) == LUA_TTABLE) {
+        lua_pushliteral(L, "__gc");
+        int has_gc = lua_rawget(L, 2) != LUA_TNIL;
+        lua_pop(L, 1);
+        if (has_gc)
+            return pl_lua_error(L, "setmetatable: a __gc metamethod (finalizer) is not allowed "
+                                "in a sandboxed scene: finalizers run where the CPU limit "
+                                "cannot stop them (%s)", TRUST_HINT);
+    }
+    return call_original(L, 1);
+}
+
 static void wrap_global(lua_State *L, const char *lib, const char *name, lua_CFunction f,
                         int extra_int, const char *extra_name)
 {
@@ -499,6 +515,7 @@ void pl_lua_install_sandbox(lua_State *L)
     wrap_global(L, NULL, "loadfile", loadfile_checked, 0, NULL);
     if (ctx->trust) return;
     wrap_global(L, NULL, "load", load_text_only, -1, NULL);
+    wrap_global(L, NULL, "setmetatable", setmetatable_checked, -1, NULL);
     static const char *const os_refused[] = {"execute", "remove", "rename", "exit",
                                              "getenv", "tmpname", "setlocale", NULL};
     for (int i = 0; os_refused[i]; i++) refuse(L, "os", os_refused[i]);

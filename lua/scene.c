@@ -44,6 +44,8 @@ struct pl_scene {
     volatile sig_atomic_t cpu_fired; /* the CPU timer went off */
     int cpu_polling;     /* no timer: the count hook checks the clock */
     int timer_armed;
+    volatile sig_atomic_t hook_seen; /* the hook ran since the timer last went off */
+    char stop_msg[512];  /* the message written when a C call does not return */
 #ifdef PL_CPU_TIMER
     timer_t timer;
 #endif
@@ -118,7 +120,9 @@ static void scene_hook(lua_State *L, lua_Debug *ar)
     void *ud;
     lua_getallocf(L, &ud);
     pl_scene *s = ud;
-    if (s->mem_over) {
+    s->hook_seen = 1;
+    if (s->mem_over && s->mem_used <= s->mem_limit) s->mem_over = 0; /* collected since */
+    if (s->mem_over && s->mem_used > s->mem_limit) {
         s->mem_over = 0;
         set_hook(s, HOOK_COUNT);
         push_where(s, L, 0);
@@ -151,11 +155,54 @@ static pl_scene *volatile timed_scene; /* the scene whose CPU timer is armed */
 
 /* SIGVTALRM from the CPU timer, delivered to the Lua thread: lua_sethook is safe to call
  * from a signal handler (lua.c stops scripts on Ctrl-C the same way). */
+static size_t append(char *buf, size_t k, size_t n, const char *text)
+{
+    while (*text && k + 1 < n) buf[k++] = *text++;
+    buf[k] = '\0';
+    return k;
+}
+
+/* The timer went off again and the hook has not run since: the scene is inside one C call
+ * (a porelab function such as w:step with a huge count) that will not return in time.
+ * Stops the program with the scene's line, using only async-signal-safe calls (the Lua
+ * stack is not changing while the C function runs, so reading it is safe). */
+static void stop_in_c_call(pl_scene *s)
+{
+    char msg[1024];
+    size_t k = append(msg, 0, sizeof msg, "porelab: ");
+    lua_Debug ar;
+    int found = 0;
+    for (int level = 0; !found && lua_getstack(s->L, level, &ar); level++) {
+        lua_getinfo(s->L, "Sl", &ar);
+        if (ar.currentline > 0 && ar.source[0] == '@') {
+            char num[16];
+            int i = (int)sizeof num - 1;
+            num[i] = '\0';
+            for (int v = ar.currentline; v > 0 && i > 0; v /= 10) num[--i] = (char)('0' + v % 10);
+            k = append(msg, k, sizeof msg, ar.short_src);
+            k = append(msg, k, sizeof msg, ":");
+            k = append(msg, k, sizeof msg, num + i);
+            k = append(msg, k, sizeof msg, ": ");
+            found = 1;
+        }
+    }
+    if (!found) {
+        k = append(msg, k, sizeof msg, s->ctx.scene_path);
+        k = append(msg, k, sizeof msg, ": ");
+    }
+    k = append(msg, k, sizeof msg, s->stop_msg);
+    ssize_t w = write(STDERR_FILENO, msg, k);
+    (void)w;
+    _exit(1);
+}
+
 static void cpu_alarm(int sig)
 {
     (void)sig;
     pl_scene *s = timed_scene;
     if (!s || !s->L) return;
+    if (s->cpu_fired && !s->hook_seen) stop_in_c_call(s);
+    s->hook_seen = 0;
     s->cpu_fired = 1;
     lua_sethook(s->L, scene_hook, LUA_MASKCOUNT, 1);
 }
@@ -190,6 +237,18 @@ static void arm_cpu(pl_scene *s)
         it.it_value.tv_sec = (time_t)s->max_cpu;
         it.it_value.tv_nsec = (long)((s->max_cpu - (double)(time_t)s->max_cpu) * 1e9);
         if (it.it_value.tv_sec == 0 && it.it_value.tv_nsec == 0) it.it_value.tv_nsec = 1;
+        /* then again after a grace period: if the hook has not run by then, a C call is
+         * not returning and the program stops (stop_in_c_call) */
+        double grace = s->max_cpu < 10 ? s->max_cpu : 10;
+        it.it_interval.tv_sec = (time_t)grace;
+        it.it_interval.tv_nsec = (long)((grace - (double)(time_t)grace) * 1e9);
+        if (it.it_interval.tv_sec == 0 && it.it_interval.tv_nsec == 0) it.it_interval.tv_nsec = 1;
+        snprintf(s->stop_msg, sizeof s->stop_msg,
+                 "the scene ran out of CPU time: more than %g s, then %g s more inside one "
+                 "call of a porelab function (such as w:step or w:run_until with a huge "
+                 "count) that did not return; porelab stopped (--max-cpu SECONDS raises the "
+                 "limit; --trust lifts the sandbox's default)\n", s->max_cpu, grace);
+        s->hook_seen = 0;
         timed_scene = s;
         if (timer_settime(s->timer, 0, &it, NULL) == 0) {
             s->timer_armed = 1;
@@ -226,10 +285,12 @@ static void *scene_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
         s->mem_used -= osize;
         return NULL;
     }
-    if (s->mem_limit > 0 && nsize > osize && s->mem_used + (nsize - osize) > s->mem_limit) {
+    /* Only while the scene's code runs (depth > 0): the host's own pushes between calls
+     * must not fail outside a protected call. */
+    if (s->mem_limit > 0 && s->depth > 0 && nsize > osize &&
+        s->mem_used + (nsize - osize) > s->mem_limit) {
         size_t grow = nsize - osize;
-        if (grow <= MEM_SMALL && s->mem_used + grow <= s->mem_limit + MEM_HEADROOM && s->L &&
-            s->depth > 0) {
+        if (grow <= MEM_SMALL && s->mem_used + grow <= s->mem_limit + MEM_HEADROOM && s->L) {
             /* let it through; the next Lua instruction raises a located error */
             if (!s->mem_over) {
                 s->mem_over = 1;
@@ -260,6 +321,59 @@ static void *scene_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     }
     s->mem_used += nsize - osize;
     return p;
+}
+
+/* coroutine.create: the new thread gets the count hook, so that the CPU timer's signal
+ * (which arms the main thread) and the memory limit reach code running inside it. */
+static int co_create(lua_State *L)
+{
+    int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, 1);
+    lua_State *co = lua_tothread(L, -1);
+    if (co) lua_sethook(co, scene_hook, LUA_MASKCOUNT, HOOK_COUNT);
+    return 1;
+}
+
+/* coroutine.wrap in terms of the create above (errors propagate as with the original). */
+static const char co_wrap_lua[] =
+    "local create, resume, pack, unpack, error = ...\n"
+    "return function(f)\n"
+    "  local co = create(f)\n"
+    "  return function(...)\n"
+    "    local r = pack(resume(co, ...))\n"
+    "    if r[1] then return unpack(r, 2, r.n) end\n"
+    "    error(r[2], 0)\n"
+    "  end\n"
+    "end\n";
+
+static void hook_coroutines(lua_State *L)
+{
+    if (lua_getglobal(L, "coroutine") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        return;
+    }
+    int co = lua_gettop(L);
+    lua_getfield(L, co, "create");
+    lua_pushcclosure(L, co_create, 1);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, co, "create");
+    if (luaL_loadbufferx(L, co_wrap_lua, sizeof co_wrap_lua - 1, "=porelab.coroutine", "t") ==
+        LUA_OK) {
+        lua_insert(L, -2);             /* chunk, create */
+        lua_getfield(L, co, "resume");
+        lua_getglobal(L, "table");
+        lua_getfield(L, -1, "pack");
+        lua_getfield(L, -2, "unpack");
+        lua_remove(L, -3);             /* chunk, create, resume, pack, unpack */
+        lua_getglobal(L, "error");
+        lua_call(L, 5, 1);
+        lua_setfield(L, co, "wrap");
+    } else {
+        lua_pop(L, 2);
+    }
+    lua_pop(L, 1);
 }
 
 void pl_scene_set_limits(pl_scene *s, double max_cpu, double max_memory_mb)
@@ -407,6 +521,7 @@ pl_scene *pl_scene_create(const pl_scene_options *opt)
     lua_atpanic(s->L, panic);
     pl_lua_set_context(s->L, &s->ctx);
     pl_lua_open_porelab(s->L);
+    hook_coroutines(s->L);
     pl_lua_install_sandbox(s->L);
     return s;
 }
@@ -733,7 +848,15 @@ int pl_scene_call_hook(pl_scene *s, const char *name, long long arg)
 void pl_scene_destroy(pl_scene **sp)
 {
     if (!sp || !*sp) return;
-    lua_close((*sp)->L);
+    pl_scene *s = *sp;
+    /* Closing runs the scene's __gc finalizers: under the same budget (an error there only
+     * ends that finalizer). */
+    s->depth++;
+    arm_cpu(s);
+    set_hook(s, HOOK_COUNT);
+    lua_close(s->L);
+    s->L = NULL;
+    disarm_cpu(s);
     free(*sp);
     *sp = NULL;
 }

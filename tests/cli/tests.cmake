@@ -257,6 +257,13 @@ pl_sec_test(cpu_pcall RC 1 ARGS run ${PL_SEC}/cpu_pcall.lua --quiet --max-cpu 1
   MATCH "cpu_pcall.lua:[345]: the scene ran out of CPU time")
 pl_sec_test(cpu_c_calls RC 1 ARGS run ${PL_SEC}/cpu_c_calls.lua --quiet --max-cpu 1
   MATCH "cpu_c_calls.lua:5: the scene ran out of CPU time")
+pl_sec_test(cpu_coroutine RC 1 ARGS run ${PL_SEC}/cpu_coroutine.lua --quiet --max-cpu 1
+  MATCH "cpu_coroutine.lua:[23]: the scene ran out of CPU time")
+pl_sec_test(cpu_long_c_call RC 1 ARGS run ${PL_SEC}/cpu_long_c_call.lua --quiet --max-cpu 1
+  MATCH "cpu_long_c_call.lua:5: the scene ran out of CPU time: more than 1 s, then 1 s more inside one call of a porelab function")
+pl_sec_test(gc_finalizer RC 1 ARGS run ${PL_SEC}/cpu_gc.lua --quiet
+  MATCH "cpu_gc.lua:3: setmetatable: a __gc metamethod \\(finalizer\\) is not allowed")
+pl_sec_test(coroutines_work RC 0 ARGS run ${PL_SEC}/coroutine_ok.lua --quiet MATCH "coroutines ok")
 pl_sec_test(cpu_trust_explicit RC 1 ARGS run ${PL_SEC}/cpu_loop.lua --quiet --trust --max-cpu 0.5
   MATCH "cpu_loop.lua:3: the scene ran out of CPU time: more than 0.5 s")
 pl_sec_test(mem_double RC 1 ARGS run ${PL_SEC}/mem_double.lua --quiet --max-memory 64
