@@ -5,15 +5,61 @@
 #include "scene_render.h"
 
 #include <inttypes.h>
+#include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
+/* Reads a limit option in (0, hi]; 0 when absent. */
+static int limit_option(const pl_opts *o, const char *name, double lo, double hi,
+                        const char *what, double *out)
+{
+    *out = 0;
+    const char *v = pl_opts_get(o, name);
+    if (!v) return 0;
+    char *end;
+    double x = strtod(v, &end);
+    if (end == v || *end || !isfinite(x) || x < lo || x > hi || !(x > 0)) {
+        fprintf(stderr, "porelab %s: %s must be %s in [%g, %g] (got '%s')\n", o->cmd->command,
+                name, what, lo, hi, v);
+        return -1;
+    }
+    *out = x;
+    return 0;
+}
+
+/* Checks the sandbox limits and --out; prints the error and returns -1 when invalid. */
+static int check_common(const pl_opts *o)
+{
+    double v;
+    if (limit_option(o, "--max-cpu", 0.001, PL_SCENE_MAX_CPU_LIMIT, "a number of seconds", &v) ||
+        limit_option(o, "--max-memory", PL_SCENE_MIN_MEMORY, PL_SCENE_MAX_MEMORY_LIMIT,
+                     "a number of megabytes", &v))
+        return -1;
+    const char *out = pl_opts_get(o, "--out");
+    if (out && out[0] == '\0') {
+        fprintf(stderr, "porelab %s: --out must name a folder (got ''; use --out . for the "
+                        "current folder)\n", o->cmd->command);
+        return -1;
+    }
+    for (const unsigned char *p = (const unsigned char *)(out ? out : ""); *p; p++)
+        if (*p < 0x20 || *p == 0x7f) {
+            fprintf(stderr, "porelab %s: --out must be a plain folder name (byte 0x%02x at "
+                            "position %d is a control character)\n", o->cmd->command, *p,
+                    (int)((const char *)p - out) + 1);
+            return -1;
+        }
+    return 0;
+}
+
 int pl_cli_require_scene(const pl_opts *o)
 {
-    if (o->npositional == 1) return 0;
-    fprintf(stderr, "porelab %s: a scene file is required (usage: porelab %s %s)\n",
-            o->cmd->command, o->cmd->command, o->cmd->usage);
-    return -1;
+    if (o->npositional != 1) {
+        fprintf(stderr, "porelab %s: a scene file is required (usage: porelab %s %s)\n",
+                o->cmd->command, o->cmd->command, o->cmd->usage);
+        return -1;
+    }
+    return check_common(o);
 }
 
 void pl_cli_default_out(const char *scene_path, char *out, size_t n)
@@ -38,6 +84,14 @@ pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir)
         fprintf(stderr, "porelab: out of memory while creating the Lua state\n");
         return NULL;
     }
+    double cpu = 0, mem = 0;
+    if (limit_option(o, "--max-cpu", 0.001, PL_SCENE_MAX_CPU_LIMIT, "a number of seconds", &cpu) ||
+        limit_option(o, "--max-memory", PL_SCENE_MIN_MEMORY, PL_SCENE_MAX_MEMORY_LIMIT,
+                     "a number of megabytes", &mem)) {
+        pl_scene_destroy(&s);
+        return NULL;
+    }
+    pl_scene_set_limits(s, cpu, mem); /* 0 keeps the default (none with --trust) */
     pl_scene_register_chart(s);
     if (pl_scene_load(s) != 0) {
         pl_cli_print_scene_error(o, s);

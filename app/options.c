@@ -7,15 +7,45 @@
 
 static const pl_opt_spec help_spec = {"--help", "-h", NULL, "show this help"};
 
+/* Limits of the sandbox, offered by every command that loads a scene (those with --trust). */
+static const pl_opt_spec sandbox_specs[] = {
+    {"--max-cpu", NULL, "SECONDS",
+     "CPU time the scene's code may take in one go (main chunk, one hook call); default 300 "
+     "in the sandbox, none with --trust"},
+    {"--max-memory", NULL, "MB",
+     "memory the scene's Lua data may take; default 1024 in the sandbox, none with --trust"},
+    {NULL, NULL, NULL, NULL}};
+
+static int own_count(const pl_command_help *cmd)
+{
+    int n = 0;
+    while (cmd->specs[n].name) n++;
+    return n;
+}
+
+static int has_trust(const pl_command_help *cmd)
+{
+    /* the live window creates its scenes itself (app/window/window_sim.c) and does not take
+     * these options yet: it runs with the sandbox's default limits */
+    if (strcmp(cmd->command, "view") == 0) return 0;
+    for (int i = 0; cmd->specs[i].name; i++)
+        if (strcmp(cmd->specs[i].name, "--trust") == 0) return 1;
+    return 0;
+}
+
+/* The command's own options, then (for commands with --trust) the sandbox limits. */
 static const pl_opt_spec *spec_at(const pl_command_help *cmd, int i)
 {
-    return cmd->specs[i].name ? &cmd->specs[i] : NULL;
+    int n = own_count(cmd);
+    if (i < n) return &cmd->specs[i];
+    if (!has_trust(cmd)) return NULL;
+    return sandbox_specs[i - n].name ? &sandbox_specs[i - n] : NULL;
 }
 
 static void list_valid(FILE *f, const pl_command_help *cmd)
 {
     fprintf(f, "valid options:");
-    for (int i = 0; spec_at(cmd, i); i++) fprintf(f, " %s", cmd->specs[i].name);
+    for (int i = 0; spec_at(cmd, i); i++) fprintf(f, " %s", spec_at(cmd, i)->name);
     fprintf(f, " --help\n");
 }
 
@@ -24,7 +54,7 @@ void pl_opts_print_help(FILE *f, const pl_command_help *cmd)
     fprintf(f, "usage: porelab %s %s\n\n%s\n\noptions:\n", cmd->command, cmd->usage,
             cmd->summary);
     for (int i = 0;; i++) {
-        const pl_opt_spec *s = spec_at(cmd, i) ? &cmd->specs[i] : &help_spec;
+        const pl_opt_spec *s = spec_at(cmd, i) ? spec_at(cmd, i) : &help_spec;
         char left[64];
         snprintf(left, sizeof left, "%s%s%s%s%s", s->alias ? s->alias : "",
                  s->alias ? ", " : "", s->name, s->arg ? " " : "", s->arg ? s->arg : "");
@@ -36,8 +66,8 @@ void pl_opts_print_help(FILE *f, const pl_command_help *cmd)
 static int find_spec(const pl_command_help *cmd, const char *arg)
 {
     for (int i = 0; spec_at(cmd, i); i++)
-        if (strcmp(arg, cmd->specs[i].name) == 0 ||
-            (cmd->specs[i].alias && strcmp(arg, cmd->specs[i].alias) == 0))
+        if (strcmp(arg, spec_at(cmd, i)->name) == 0 ||
+            (spec_at(cmd, i)->alias && strcmp(arg, spec_at(cmd, i)->alias) == 0))
             return i;
     return -1;
 }
@@ -68,10 +98,10 @@ int pl_opts_parse(pl_opts *o, const pl_command_help *cmd, int argc, char **argv,
             list_valid(stderr, cmd);
             return PL_EXIT_USAGE;
         }
-        if (cmd->specs[k].arg) {
+        if (spec_at(cmd, k)->arg) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "porelab %s: %s needs a value (%s)\n", cmd->command, a,
-                        cmd->specs[k].arg);
+                        spec_at(cmd, k)->arg);
                 return PL_EXIT_USAGE;
             }
             o->value[k] = argv[++i];

@@ -71,6 +71,12 @@ int pl_path_resolve(const char *path, char *out, size_t n)
     return 0;
 }
 
+int pl_path_is_link(const char *path)
+{
+    struct stat st;
+    return lstat(path, &st) == 0 && S_ISLNK(st.st_mode);
+}
+
 int pl_path_inside(const char *p, const char *dir)
 {
     size_t k = strlen(dir);

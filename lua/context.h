@@ -32,6 +32,9 @@ void pl_path_join(char *out, size_t n, const char *base, const char *path);
  * yet (its directory must). Returns 0 or -1. */
 int pl_path_resolve(const char *path, char *out, size_t n);
 
+/* 1 when path itself (its last component, not followed) is a symbolic link. */
+int pl_path_is_link(const char *path);
+
 /* 1 when resolved path `p` equals or lies under resolved directory `dir`. */
 int pl_path_inside(const char *p, const char *dir);
 

@@ -5,20 +5,25 @@
 #include <stdio.h>
 #include <string.h>
 
-void pl_lua_where(lua_State *L)
+int pl_lua_where_from(lua_State *L, int level)
 {
     lua_Debug ar;
     /* Prefer the innermost frame running scene code (a file chunk, source "@..."); the
      * embedded helpers are named "=porelab...", so errors point at the scene line that
      * called them. */
-    for (int level = 1; lua_getstack(L, level, &ar); level++) {
+    for (; lua_getstack(L, level, &ar); level++) {
         lua_getinfo(L, "Sl", &ar);
         if (ar.currentline > 0 && ar.source[0] == '@') {
             lua_pushfstring(L, "%s:%d: ", ar.short_src, ar.currentline);
-            return;
+            return 1;
         }
     }
-    luaL_where(L, 1);
+    return 0;
+}
+
+void pl_lua_where(lua_State *L)
+{
+    if (!pl_lua_where_from(L, 1)) luaL_where(L, 1);
 }
 
 int pl_lua_error(lua_State *L, const char *fmt, ...)

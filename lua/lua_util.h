@@ -10,6 +10,10 @@
 /* Pushes "file:line: " of the innermost scene-file frame (skipping embedded porelab
  * libraries, whose chunk names start with '='), or "" when there is none. */
 void pl_lua_where(lua_State *L);
+/* The same, starting the search at stack level `level` (0 inside a hook: the function that
+ * was running). Returns 1 when a scene-file frame was found (its location pushed), 0 when
+ * not (nothing pushed). */
+int pl_lua_where_from(lua_State *L, int level);
 
 /* Raises a Lua error "file:line: <message>" located at the scene line (see pl_lua_where). */
 int pl_lua_error(lua_State *L, const char *fmt, ...)

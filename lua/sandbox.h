@@ -21,4 +21,12 @@ void pl_lua_output_path(lua_State *L, const char *path, char *out, size_t n, con
  * naming fn. */
 void pl_lua_input_path(lua_State *L, const char *path, char *out, size_t n, const char *fn);
 
+/* Opens a file for writing like fopen(path, mode) after pl_lua_output_path, never through
+ * a symbolic link (O_NOFOLLOW): the one checked open for files a scene writes. Raises a
+ * Lua error naming fn for a refused path or an invalid mode; returns NULL (errno set) when
+ * the open itself fails. The resolved path is left in resolved. */
+#include <stdio.h>
+FILE *pl_lua_output_fopen(lua_State *L, const char *path, const char *mode, char *resolved,
+                          size_t n, const char *fn);
+
 #endif

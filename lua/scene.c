@@ -1,5 +1,5 @@
 /* Scene loader: one Lua state per scene, run under lua_pcall with a traceback handler. */
-#define _XOPEN_SOURCE 700
+#define _GNU_SOURCE /* timer_create with SIGEV_THREAD_ID */
 #include "scene.h"
 #include "context.h"
 #include "lua_util.h"
@@ -13,7 +13,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
+#include <sys/syscall.h>
+#include <time.h>
 #include <unistd.h>
+
+#if defined(__linux__) && defined(SIGEV_THREAD_ID)
+#define PL_CPU_TIMER 1 /* a CPU-time timer on the Lua thread; else a count hook polls */
+#endif
 
 struct pl_scene {
     lua_State *L;
@@ -23,15 +30,383 @@ struct pl_scene {
     int declarative;
     char error[4096];
     char traceback[8192];
+    /* limits (0: none) */
+    double max_cpu;      /* s per call into the scene */
+    size_t mem_limit;    /* bytes of Lua data */
+    /* accounting */
+    size_t mem_used;
+    int mem_over;        /* past the limit by a small allocation: the hook raises the error */
+    int mem_refused;     /* an allocation was refused */
+    char mem_where[PATH_MAX + 32]; /* "file:line: " where it was refused, or "" */
+    int depth;           /* nesting of protected calls */
+    double cpu_deadline; /* thread CPU time at which the current call runs out */
+    int cpu_hit;         /* the current call ran out: every instruction raises again */
+    volatile sig_atomic_t cpu_fired; /* the CPU timer went off */
+    int cpu_polling;     /* no timer: the count hook checks the clock */
+    int timer_armed;
+    volatile sig_atomic_t hook_seen; /* the hook ran since the timer last went off */
+    char stop_msg[512];  /* the message written when a C call does not return */
+#ifdef PL_CPU_TIMER
+    timer_t timer;
+#endif
+    int in_main;         /* running the scene file (for messages) */
+    int return_line;     /* line of the scene's final return, 0 when unknown */
+    char result_where[PATH_MAX + 32];
 };
+
+/* Copies src into dst with control characters shown as \xNN (terminal escape codes in a
+ * scene's message must not reach the terminal); newlines and tabs are kept. */
+static void sanitize(char *dst, size_t n, const char *src)
+{
+    size_t k = 0;
+    for (const unsigned char *p = (const unsigned char *)src; *p && k + 5 < n; p++) {
+        int c1 = p[0] == 0xc2 && p[1] >= 0x80 && p[1] <= 0x9f; /* UTF-8 C1 control */
+        if ((*p < 0x20 && *p != '\n' && *p != '\t') || *p == 0x7f || c1) {
+            k += (size_t)snprintf(dst + k, n - k, "\\x%02x", c1 ? p[1] : *p);
+            if (c1) p++;
+        } else {
+            dst[k++] = (char)*p;
+        }
+    }
+    dst[k] = '\0';
+}
 
 void pl_scene_set_error(pl_scene *s, const char *fmt, ...)
 {
+    char raw[sizeof s->error];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(s->error, sizeof s->error, fmt, ap);
+    vsnprintf(raw, sizeof raw, fmt, ap);
     va_end(ap);
+    sanitize(s->error, sizeof s->error, raw);
 }
+
+/* ------------------------------------------------------------------ limits */
+
+static double thread_cpu(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+#define HOOK_COUNT 10000          /* instructions between CPU-time checks */
+#define MEM_SMALL (32u << 20)     /* allocations up to this may pass the limit a little ... */
+#define MEM_HEADROOM (64u << 20)  /* ... by this much, until the next instruction raises */
+#define MEM_SAFE_WHERE (32u << 20) /* larger requests are never the Lua stack: safe to locate */
+
+/* Pushes "file:line: " of the innermost scene line; the scene path alone when none. */
+static void push_where(pl_scene *s, lua_State *L, int level)
+{
+    if (!pl_lua_where_from(L, level)) lua_pushfstring(L, "%s: ", s->ctx.scene_path);
+}
+
+static void scene_hook(lua_State *L, lua_Debug *ar);
+
+/* Installs the hook the limits need: none while the CPU timer runs (no cost per
+ * instruction), a count hook when the clock must be polled, or count 1 to raise an error
+ * at the next instruction. */
+static void set_hook(pl_scene *s, int count)
+{
+    if (count == 1 || s->cpu_polling)
+        lua_sethook(s->L, scene_hook, LUA_MASKCOUNT, count);
+    else
+        lua_sethook(s->L, NULL, 0, 0);
+}
+
+static void scene_hook(lua_State *L, lua_Debug *ar)
+{
+    (void)ar;
+    void *ud;
+    lua_getallocf(L, &ud);
+    pl_scene *s = ud;
+    s->hook_seen = 1;
+    if (s->mem_over && s->mem_used <= s->mem_limit) s->mem_over = 0; /* collected since */
+    if (s->mem_over && s->mem_used > s->mem_limit) {
+        s->mem_over = 0;
+        set_hook(s, HOOK_COUNT);
+        push_where(s, L, 0);
+        lua_pushfstring(L, "out of memory: the scene's Lua data passed the limit of %d MB "
+                        "(--max-memory MB raises it; --trust lifts the sandbox's default)",
+                        (int)(s->mem_limit >> 20));
+        lua_concat(L, 2);
+        lua_error(L);
+    }
+    if (s->max_cpu > 0 && s->depth > 0 &&
+        (s->cpu_hit || s->cpu_fired || (s->cpu_polling && thread_cpu() > s->cpu_deadline))) {
+        /* stays armed at count 1: a pcall that catches this gets it again at once */
+        lua_sethook(L, scene_hook, LUA_MASKCOUNT, 1);
+        s->cpu_hit = 1;
+        push_where(s, L, 0);
+        char secs[32];
+        snprintf(secs, sizeof secs, "%g", s->max_cpu);
+        lua_pushfstring(L, "the scene ran out of CPU time: more than %s s %s (--max-cpu "
+                        "SECONDS raises it; --trust lifts the sandbox's default)", secs,
+                        s->in_main ? "running the scene file"
+                                   : "in one call from porelab into the scene (a hook)");
+        lua_concat(L, 2);
+        lua_error(L);
+    }
+    if (!s->cpu_hit) set_hook(s, HOOK_COUNT); /* a wake-up with nothing to report */
+}
+
+#ifdef PL_CPU_TIMER
+static pl_scene *volatile timed_scene; /* the scene whose CPU timer is armed */
+
+/* SIGVTALRM from the CPU timer, delivered to the Lua thread: lua_sethook is safe to call
+ * from a signal handler (lua.c stops scripts on Ctrl-C the same way). */
+static size_t append(char *buf, size_t k, size_t n, const char *text)
+{
+    while (*text && k + 1 < n) buf[k++] = *text++;
+    buf[k] = '\0';
+    return k;
+}
+
+/* The timer went off again and the hook has not run since: the scene is inside one C call
+ * (a porelab function such as w:step with a huge count) that will not return in time.
+ * Stops the program with the scene's line, using only async-signal-safe calls (the Lua
+ * stack is not changing while the C function runs, so reading it is safe). */
+static void stop_in_c_call(pl_scene *s)
+{
+    char msg[1024];
+    size_t k = append(msg, 0, sizeof msg, "porelab: ");
+    lua_Debug ar;
+    int found = 0;
+    for (int level = 0; !found && lua_getstack(s->L, level, &ar); level++) {
+        lua_getinfo(s->L, "Sl", &ar);
+        if (ar.currentline > 0 && ar.source[0] == '@') {
+            char num[16];
+            int i = (int)sizeof num - 1;
+            num[i] = '\0';
+            for (int v = ar.currentline; v > 0 && i > 0; v /= 10) num[--i] = (char)('0' + v % 10);
+            k = append(msg, k, sizeof msg, ar.short_src);
+            k = append(msg, k, sizeof msg, ":");
+            k = append(msg, k, sizeof msg, num + i);
+            k = append(msg, k, sizeof msg, ": ");
+            found = 1;
+        }
+    }
+    if (!found) {
+        k = append(msg, k, sizeof msg, s->ctx.scene_path);
+        k = append(msg, k, sizeof msg, ": ");
+    }
+    k = append(msg, k, sizeof msg, s->stop_msg);
+    ssize_t w = write(STDERR_FILENO, msg, k);
+    (void)w;
+    _exit(1);
+}
+
+static void cpu_alarm(int sig)
+{
+    (void)sig;
+    pl_scene *s = timed_scene;
+    if (!s || !s->L) return;
+    if (s->cpu_fired && !s->hook_seen) stop_in_c_call(s);
+    s->hook_seen = 0;
+    s->cpu_fired = 1;
+    lua_sethook(s->L, scene_hook, LUA_MASKCOUNT, 1);
+}
+#endif
+
+/* Starts the CPU budget of one call into the scene. */
+static void arm_cpu(pl_scene *s)
+{
+    s->cpu_hit = 0;
+    s->cpu_fired = 0;
+    s->cpu_polling = 0;
+    if (s->max_cpu <= 0) return;
+    s->cpu_deadline = thread_cpu() + s->max_cpu;
+#ifdef PL_CPU_TIMER
+    static int installed;
+    if (!installed) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = cpu_alarm;
+        sa.sa_flags = SA_RESTART;
+        sigemptyset(&sa.sa_mask);
+        installed = sigaction(SIGVTALRM, &sa, NULL) == 0;
+    }
+    struct sigevent ev;
+    memset(&ev, 0, sizeof ev);
+    ev.sigev_notify = SIGEV_THREAD_ID;
+    ev.sigev_signo = SIGVTALRM;
+    ev._sigev_un._tid = (pid_t)syscall(SYS_gettid);
+    if (installed && timer_create(CLOCK_THREAD_CPUTIME_ID, &ev, &s->timer) == 0) {
+        struct itimerspec it;
+        memset(&it, 0, sizeof it);
+        it.it_value.tv_sec = (time_t)s->max_cpu;
+        it.it_value.tv_nsec = (long)((s->max_cpu - (double)(time_t)s->max_cpu) * 1e9);
+        if (it.it_value.tv_sec == 0 && it.it_value.tv_nsec == 0) it.it_value.tv_nsec = 1;
+        /* then again after a grace period: if the hook has not run by then, a C call is
+         * not returning and the program stops (stop_in_c_call) */
+        double grace = s->max_cpu < 10 ? s->max_cpu : 10;
+        it.it_interval.tv_sec = (time_t)grace;
+        it.it_interval.tv_nsec = (long)((grace - (double)(time_t)grace) * 1e9);
+        if (it.it_interval.tv_sec == 0 && it.it_interval.tv_nsec == 0) it.it_interval.tv_nsec = 1;
+        snprintf(s->stop_msg, sizeof s->stop_msg,
+                 "the scene ran out of CPU time: more than %g s, then %g s more inside one "
+                 "call of a porelab function (such as w:step or w:run_until with a huge "
+                 "count) that did not return; porelab stopped (--max-cpu SECONDS raises the "
+                 "limit; --trust lifts the sandbox's default)\n", s->max_cpu, grace);
+        s->hook_seen = 0;
+        timed_scene = s;
+        if (timer_settime(s->timer, 0, &it, NULL) == 0) {
+            s->timer_armed = 1;
+            return;
+        }
+        timed_scene = NULL;
+        timer_delete(s->timer);
+    }
+#endif
+    s->cpu_polling = 1;
+}
+
+static void disarm_cpu(pl_scene *s)
+{
+#ifdef PL_CPU_TIMER
+    if (s->timer_armed) {
+        timed_scene = NULL;
+        timer_delete(s->timer);
+        s->timer_armed = 0;
+    }
+#endif
+    s->cpu_polling = 0;
+    s->cpu_hit = 0;
+    s->cpu_fired = 0;
+}
+
+/* The Lua allocator: counts the Lua data and refuses to pass mem_limit. */
+static void *scene_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
+{
+    pl_scene *s = ud;
+    if (!ptr) osize = 0; /* osize is then the kind of object */
+    if (nsize == 0) {
+        free(ptr);
+        s->mem_used -= osize;
+        return NULL;
+    }
+    /* Only while the scene's code runs (depth > 0): the host's own pushes between calls
+     * must not fail outside a protected call. */
+    if (s->mem_limit > 0 && s->depth > 0 && nsize > osize &&
+        s->mem_used + (nsize - osize) > s->mem_limit) {
+        size_t grow = nsize - osize;
+        if (grow <= MEM_SMALL && s->mem_used + grow <= s->mem_limit + MEM_HEADROOM && s->L) {
+            /* let it through; the next Lua instruction raises a located error */
+            if (!s->mem_over) {
+                s->mem_over = 1;
+                lua_sethook(s->L, scene_hook, LUA_MASKCOUNT, 1);
+            }
+        } else {
+            if (!s->mem_refused && s->L && grow > MEM_SAFE_WHERE) {
+                /* a large block (a string or table, never the stack): the call stack is
+                 * consistent, so its scene line can be read */
+                lua_Debug ar;
+                for (int level = 0; lua_getstack(s->L, level, &ar); level++) {
+                    lua_getinfo(s->L, "Sl", &ar);
+                    if (ar.currentline > 0 && ar.source[0] == '@') {
+                        snprintf(s->mem_where, sizeof s->mem_where, "%s:%d: ", ar.short_src,
+                                 ar.currentline);
+                        break;
+                    }
+                }
+            }
+            s->mem_refused = 1;
+            return NULL;
+        }
+    }
+    void *p = realloc(ptr, nsize);
+    if (!p) {
+        s->mem_refused = 1;
+        return NULL;
+    }
+    s->mem_used += nsize - osize;
+    return p;
+}
+
+/* coroutine.create: the new thread gets the count hook, so that the CPU timer's signal
+ * (which arms the main thread) and the memory limit reach code running inside it. */
+static int co_create(lua_State *L)
+{
+    int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, 1);
+    lua_State *co = lua_tothread(L, -1);
+    if (co) lua_sethook(co, scene_hook, LUA_MASKCOUNT, HOOK_COUNT);
+    return 1;
+}
+
+/* coroutine.wrap in terms of the create above (errors propagate as with the original). */
+static const char co_wrap_lua[] =
+    "local create, resume, pack, unpack, error = ...\n"
+    "return function(f)\n"
+    "  local co = create(f)\n"
+    "  return function(...)\n"
+    "    local r = pack(resume(co, ...))\n"
+    "    if r[1] then return unpack(r, 2, r.n) end\n"
+    "    error(r[2], 0)\n"
+    "  end\n"
+    "end\n";
+
+static void hook_coroutines(lua_State *L)
+{
+    if (lua_getglobal(L, "coroutine") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        return;
+    }
+    int co = lua_gettop(L);
+    lua_getfield(L, co, "create");
+    lua_pushcclosure(L, co_create, 1);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, co, "create");
+    if (luaL_loadbufferx(L, co_wrap_lua, sizeof co_wrap_lua - 1, "=porelab.coroutine", "t") ==
+        LUA_OK) {
+        lua_insert(L, -2);             /* chunk, create */
+        lua_getfield(L, co, "resume");
+        lua_getglobal(L, "table");
+        lua_getfield(L, -1, "pack");
+        lua_getfield(L, -2, "unpack");
+        lua_remove(L, -3);             /* chunk, create, resume, pack, unpack */
+        lua_getglobal(L, "error");
+        lua_call(L, 5, 1);
+        lua_setfield(L, co, "wrap");
+    } else {
+        lua_pop(L, 2);
+    }
+    lua_pop(L, 1);
+}
+
+void pl_scene_set_limits(pl_scene *s, double max_cpu, double max_memory_mb)
+{
+    if (max_cpu > 0) s->max_cpu = max_cpu;
+    else if (max_cpu < 0) s->max_cpu = 0;
+    if (max_memory_mb > 0) s->mem_limit = (size_t)(max_memory_mb * 1048576.0);
+    else if (max_memory_mb < 0) s->mem_limit = 0;
+}
+
+static int panic(lua_State *L)
+{
+    const char *msg = lua_tostring(L, -1);
+    fprintf(stderr, "porelab: PANIC: unprotected error in call to Lua API (%s)\n",
+            msg ? msg : "error object is not a string");
+    return 0;
+}
+
+/* Length of a leading "chunk:line: " (as Lua prefixes errors raised in scene code), 0 when
+ * msg does not start with one. */
+static size_t location_len(const char *msg)
+{
+    const char *colon = strchr(msg, ':');
+    if (!colon || colon == msg || colon[1] < '0' || colon[1] > '9') return 0;
+    const char *p = colon + 1;
+    while (*p >= '0' && *p <= '9') p++;
+    if (*p != ':') return 0;
+    p++;
+    if (*p == ' ') p++;
+    return (size_t)(p - msg);
+}
+
+static int has_location(const char *msg) { return location_len(msg) > 0; }
 
 /* Message handler: keeps the message as the one-line error and the traceback apart. */
 static int message_handler(lua_State *L)
@@ -45,20 +420,18 @@ static int message_handler(lua_State *L)
             msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
     }
     luaL_traceback(L, L, NULL, 1);
-    snprintf(s->traceback, sizeof s->traceback, "%s", lua_tostring(L, -1));
+    sanitize(s->traceback, sizeof s->traceback, lua_tostring(L, -1));
     lua_pop(L, 1);
+    /* An error without a scene line (raised in C: "C stack overflow", require, out of
+     * memory; or located in an embedded helper, "porelab.mimes:246: ...") gets the line of
+     * the innermost scene frame, the line the user wrote. */
+    if ((!has_location(msg) || strncmp(msg, "porelab.", 8) == 0) && pl_lua_where_from(L, 1)) {
+        lua_pushstring(L, msg);
+        lua_concat(L, 2);
+        return 1;
+    }
     lua_pushstring(L, msg);
     return 1;
-}
-
-/* 1 when msg starts with "chunk:line:" (as Lua prefixes errors raised in scene code). */
-static int has_location(const char *msg)
-{
-    const char *colon = strchr(msg, ':');
-    if (!colon || colon == msg || colon[1] < '0' || colon[1] > '9') return 0;
-    const char *p = colon + 1;
-    while (*p >= '0' && *p <= '9') p++;
-    return *p == ':';
 }
 
 /* Calls the function below nargs arguments with the handler; on error stores the message
@@ -70,17 +443,58 @@ static int protected_call(pl_scene *s, int nargs, int nresults)
     lua_pushlightuserdata(L, s);
     lua_pushcclosure(L, message_handler, 1);
     lua_insert(L, base);
+    if (s->depth++ == 0) { /* each call from porelab into the scene has its own budget */
+        s->mem_over = 0;
+        s->mem_refused = 0;
+        s->mem_where[0] = '\0';
+        arm_cpu(s);
+        set_hook(s, HOOK_COUNT);
+    }
     int rc = lua_pcall(L, nargs, nresults, base);
+    if (--s->depth == 0) {
+        disarm_cpu(s);
+        s->in_main = 0;
+        set_hook(s, HOOK_COUNT);
+    }
     lua_remove(L, base);
     if (rc == LUA_OK) return 0;
     const char *msg = lua_tostring(L, -1);
     if (!msg) msg = "unknown error";
-    if (has_location(msg))
+    if (s->mem_refused && (rc == LUA_ERRMEM || strstr(msg, "not enough memory"))) {
+        char where[sizeof s->mem_where];
+        if (s->mem_where[0])
+            snprintf(where, sizeof where, "%s", s->mem_where);
+        else if (has_location(msg))
+            snprintf(where, sizeof where, "%.*s", (int)location_len(msg), msg);
+        else
+            snprintf(where, sizeof where, "%s: ", s->ctx.scene_path);
+        if (s->mem_limit > 0)
+            pl_scene_set_error(s, "%sout of memory: the scene's Lua data would pass the limit "
+                               "of %d MB (--max-memory MB raises it; --trust lifts the "
+                               "sandbox's default)", where, (int)(s->mem_limit >> 20));
+        else
+            pl_scene_set_error(s, "%sout of memory (the system refused %s)", where,
+                               "to give the scene's Lua data more memory");
+    } else if (has_location(msg)) {
         pl_scene_set_error(s, "%s", msg);
-    else
-        pl_scene_set_error(s, "%s: %s", s->ctx.scene_path, msg);
+    } else {
+        /* raised outside the scene's code: by the checks on the returned table (render,
+         * run, params, hooks) */
+        pl_scene_set_error(s, "%s: %s", pl_scene_result_location(s), msg);
+    }
     lua_pop(L, 1);
     return -1;
+}
+
+const char *pl_scene_result_location(const pl_scene *s)
+{
+    pl_scene *m = (pl_scene *)s;
+    if (s->return_line > 0)
+        snprintf(m->result_where, sizeof m->result_where, "%s:%d", s->ctx.scene_path,
+                 s->return_line);
+    else
+        snprintf(m->result_where, sizeof m->result_where, "%s", s->ctx.scene_path);
+    return s->result_where;
 }
 
 pl_scene *pl_scene_create(const pl_scene_options *opt)
@@ -98,13 +512,16 @@ pl_scene *pl_scene_create(const pl_scene_options *opt)
     else
         pl_path_join(s->ctx.out_dir, PATH_MAX, cwd, opt->out_dir);
     s->ctx.trust = opt->trust;
-    s->L = luaL_newstate();
+    if (!opt->trust) pl_scene_set_limits(s, PL_SCENE_DEFAULT_MAX_CPU, PL_SCENE_DEFAULT_MAX_MEMORY);
+    s->L = lua_newstate(scene_alloc, s);
     if (!s->L) {
         free(s);
         return NULL;
     }
+    lua_atpanic(s->L, panic);
     pl_lua_set_context(s->L, &s->ctx);
     pl_lua_open_porelab(s->L);
+    hook_coroutines(s->L);
     pl_lua_install_sandbox(s->L);
     return s;
 }
@@ -212,22 +629,52 @@ static int check_result(lua_State *L)
     return 0;
 }
 
+/* The line of the scene's final return (the statement that returned the result table):
+ * at the top level `return` must be the last statement, and scenes write it at the left
+ * margin, so it is the last line that starts with "return". */
+static void find_return_statement(pl_scene *s)
+{
+    FILE *f = fopen(s->ctx.scene_path, "r");
+    if (!f) return;
+    char buf[512];
+    int line = 1, found = 0, line_start = 1;
+    while (fgets(buf, sizeof buf, f)) {
+        if (line_start && strncmp(buf, "return", 6) == 0 &&
+            (buf[6] == '\0' || strchr(" \t{(\r\n", buf[6])))
+            found = line;
+        line_start = strchr(buf, '\n') != NULL;
+        if (line_start) line++;
+    }
+    fclose(f);
+    s->return_line = found;
+}
+
 int pl_scene_load(pl_scene *s)
 {
     lua_State *L = s->L;
-    FILE *f = fopen(s->ctx.scene_path, "r");
+    FILE *f = fopen(s->ctx.scene_path, "rb");
     if (!f) {
         pl_scene_set_error(s, "cannot open scene '%s': %s", s->ctx.scene_path,
                            strerror(errno));
         return -1;
     }
+    int first = fgetc(f);
     fclose(f);
+    if (first == LUA_SIGNATURE[0]) {
+        pl_scene_set_error(s, "%s:1: the scene is a precompiled (binary) chunk; scenes must "
+                           "be Lua source text", s->ctx.scene_path);
+        return -1;
+    }
     if (luaL_loadfilex(L, s->ctx.scene_path, "t") != LUA_OK) {
-        pl_scene_set_error(s, "%s", lua_tostring(L, -1));
+        const char *msg = lua_tostring(L, -1);
+        if (has_location(msg)) pl_scene_set_error(s, "%s", msg);
+        else pl_scene_set_error(s, "%s:1: %s", s->ctx.scene_path, msg ? msg : "cannot load");
         lua_pop(L, 1);
         return -1;
     }
+    s->in_main = 1;
     if (protected_call(s, 0, 1) != 0) return -1;
+    find_return_statement(s);
     if (lua_isnil(L, -1)) { /* imperative script: describe its last world, if any */
         lua_pop(L, 1);
         pl_lua_scene_push_last_world(L);
@@ -352,7 +799,8 @@ int pl_scene_set_param(pl_scene *s, int i, double value)
     push_params(s);
     if (!lua_istable(L, -1) || lua_geti(L, -1, i + 1) != LUA_TTABLE ||
         lua_getfield(L, -1, "set") != LUA_TFUNCTION || s->world_ref == LUA_NOREF) {
-        pl_scene_set_error(s, "%s: params[%d]: no set function", s->ctx.scene_path, i + 1);
+        pl_scene_set_error(s, "%s: params[%d]: no set function", pl_scene_result_location(s),
+                           i + 1);
         lua_settop(L, top);
         return -1;
     }
@@ -388,7 +836,7 @@ int pl_scene_call_hook(pl_scene *s, const char *name, long long arg)
     }
     if (t != LUA_TFUNCTION) {
         pl_scene_set_error(s, "%s: scene result: %s must be a function (got %s)",
-                           s->ctx.scene_path, name, lua_typename(s->L, t));
+                           pl_scene_result_location(s), name, lua_typename(s->L, t));
         lua_pop(s->L, 1);
         return -1;
     }
@@ -400,7 +848,11 @@ int pl_scene_call_hook(pl_scene *s, const char *name, long long arg)
 void pl_scene_destroy(pl_scene **sp)
 {
     if (!sp || !*sp) return;
-    lua_close((*sp)->L);
+    pl_scene *s = *sp;
+    /* Closing runs __gc finalizers, which Lua runs with hooks off: no limit could stop
+     * them, so the sandbox refuses them (setmetatable_checked in sandbox.c). */
+    lua_close(s->L);
+    s->L = NULL;
     free(*sp);
     *sp = NULL;
 }

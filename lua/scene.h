@@ -19,6 +19,20 @@ typedef struct pl_scene_options {
     int trust;           ///< 1 lifts the sandbox (--trust)
 } pl_scene_options;
 
+/// Limits on the scene's code. A sandboxed scene starts with the defaults below, a trusted
+/// one with none. max_cpu: CPU time (s) the scene's code may take in one go: running the
+/// scene file, or one call from porelab into the scene (a hook, params.set, reading
+/// render/run); the Lua code and the porelab functions it calls count. max_memory_mb: the
+/// Lua data the scene may hold, MB. For each: > 0 sets it, < 0 removes it, 0 keeps it.
+/// Exceeding either stops the scene with "scene.lua:LINE: ..." naming the option.
+void pl_scene_set_limits(pl_scene *s, double max_cpu, double max_memory_mb);
+
+#define PL_SCENE_DEFAULT_MAX_CPU 300.0     ///< s, sandboxed scenes
+#define PL_SCENE_DEFAULT_MAX_MEMORY 1024.0 ///< MB, sandboxed scenes
+#define PL_SCENE_MAX_CPU_LIMIT 1e7         ///< largest --max-cpu, s
+#define PL_SCENE_MIN_MEMORY 16.0           ///< smallest --max-memory, MB
+#define PL_SCENE_MAX_MEMORY_LIMIT 1048576.0 ///< largest --max-memory, MB (1 TB)
+
 /// Run settings the scene asked for in its `run` table; 0 = not given.
 typedef struct pl_scene_run {
     double t_end;        ///< simulated end time, s
@@ -77,6 +91,10 @@ int pl_scene_set_param(pl_scene *s, int i, double value);
 
 /// The scene path as given (for messages).
 const char *pl_scene_path(const pl_scene *s);
+/// "scene.lua:LINE" of the scene's final `return` (the statement that returned the result
+/// table), or the scene path alone when not known: for messages about the result table
+/// written outside the Lua reader (e.g. "no usable time step").
+const char *pl_scene_result_location(const pl_scene *s);
 /// Sets the error message (used by the host when it rejects a result field).
 void pl_scene_set_error(pl_scene *s, const char *fmt, ...)
 #if defined(__GNUC__)

@@ -8,6 +8,9 @@ string(REPLACE "|" ";" args "${ARGS}")
 if(DEFINED EXPECT_FILE)
   file(REMOVE "${EXPECT_FILE}")
 endif()
+if(DEFINED NO_FILE) # left by an earlier run (or an earlier build): the check must see this one
+  file(REMOVE "${NO_FILE}")
+endif()
 execute_process(COMMAND ${EXE} ${args}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
   WORKING_DIRECTORY "${WORKDIR}")

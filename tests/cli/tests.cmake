@@ -49,12 +49,12 @@ pl_cli_test(bad_missing_file RC 1 ARGS run ${PL_BAD}/no_such_scene.lua --quiet
 pl_cli_test(bad_engine_error RC 1 ARGS run ${PL_BAD}/engine_error.lua --quiet
   MATCH "engine_error.lua:4: polygon: .*counter-clockwise")
 pl_cli_test(bad_return_value RC 1 ARGS run ${PL_BAD}/bad_return.lua --quiet
-  MATCH "bad_return.lua: the scene must return nothing .*\\(got number\\)")
+  MATCH "bad_return.lua:2: the scene must return nothing .*\\(got number\\)")
 pl_cli_test(bad_render_layer RC 1 ARGS run ${PL_BAD}/bad_render.lua --quiet
-  MATCH "bad_render.lua: render: layers: unknown layer 'force'")
+  MATCH "bad_render.lua:5: render: layers: unknown layer 'force'")
 pl_cli_test(bad_overlay RC 1
   ARGS run ${PL_BAD}/bad_overlay.lua --quiet --out ${PL_CLI_OUT}/bad_overlay
-  MATCH "bad_overlay.lua: render: overlay\\[2\\]: radius must be > 0 .*\\(got -1\\)"
+  MATCH "bad_overlay.lua:5: render: overlay\\[2\\]: radius must be > 0 .*\\(got -1\\)"
   MATCH2 "run stopped at t = 0 s \\(step 0 of")
 pl_cli_test(run_unstable RC 1
   ARGS run ${PL_BAD}/unstable.lua --quiet --out ${PL_CLI_OUT}/unstable
@@ -181,7 +181,7 @@ pl_cli_test(mimes_pairs RC 0 ARGS run tests/cli/lua/mimes_pairs.lua --quiet --ou
 pl_cli_test(scene_params RC 0 ARGS run tests/cli/lua/params.lua --quiet --out ${PL_CLI_OUT}/params
   EXPECT_FILE ${PL_CLI_OUT}/params/frame_000001.png)
 pl_cli_test(bad_params RC 1 ARGS run ${PL_BAD}/bad_params.lua --quiet --out ${PL_CLI_OUT}/bad_params
-  MATCH "^porelab: tests/cli/bad/bad_params.lua: params\\[2\\] \\(friction\\): max must be > min \\(got min 0.9, max 0.1\\)\n$")
+  MATCH "^porelab: tests/cli/bad/bad_params.lua:5: params\\[2\\] \\(friction\\): max must be > min \\(got min 0.9, max 0.1\\)\n$")
 
 # A still replays the run's on_frame hooks, so it equals the run's frame at the same time.
 add_test(NAME cli_still_matches_run COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
@@ -210,3 +210,107 @@ include(${PL_CLI_DIR}/faults/tests.cmake)
 pl_cli_test(engine_files RC 0 ARGS run tests/cli/lua/engine_files.lua --quiet --out ${PL_CLI_OUT}/engine_files
   EXPECT_FILE ${PL_CLI_OUT}/engine_files/pressures.flu FILE_MATCH "^% porelab fluid pressures"
   NO_FILE ${CMAKE_SOURCE_DIR}/geometry.flu)
+
+# Security probes (issue 13): each is refused with a file:line message and leaves no file
+# outside the output folder. Scenes in tests/cli/security/.
+set(PL_SEC tests/cli/security)
+set(PL_SEC_OUT ${PL_CLI_OUT}/security)
+function(pl_sec_test name)
+  pl_cli_test(sec_${name} ${ARGN})
+  set_tests_properties(cli_sec_${name} PROPERTIES LABELS "cli;security" TIMEOUT 30)
+endfunction()
+# Bytecode through require (it crashed liblua): text chunks only; package.path is fixed.
+pl_sec_test(require_binary RC 1 ARGS run ${PL_SEC}/require_binary.lua --quiet
+  --out ${PL_SEC_OUT}/require_binary
+  MATCH "^porelab: tests/cli/security/require_binary.lua:3: require 'bin_helper': tests/cli/security/bin_helper.lua is a precompiled \\(binary\\) chunk")
+pl_sec_test(require_bytecode_path RC 1 ARGS run ${PL_SEC}/require_bytecode_path.lua --quiet
+  --out ${PL_SEC_OUT}/require_bytecode_path
+  MATCH "require_bytecode_path.lua:7: package.path cannot be changed in a sandboxed scene")
+pl_sec_test(require_bytecode_rawset RC 1 ARGS run ${PL_SEC}/require_bytecode_rawset.lua --quiet
+  --out ${PL_SEC_OUT}/require_bytecode_rawset
+  MATCH "require_bytecode_rawset.lua:8: require: module 'evil2' not found: .*package.path is not used")
+pl_sec_test(binary_scene RC 1 ARGS run ${PL_SEC}/bin_helper.lua --quiet --trust
+  --out ${PL_SEC_OUT}/binary_scene
+  MATCH "bin_helper.lua:1: the scene is a precompiled \\(binary\\) chunk")
+# The search path is not the scene's: no /etc/passwd, no probing, no climbing out.
+pl_sec_test(package_path RC 1 ARGS run ${PL_SEC}/package_path_passwd.lua --quiet
+  MATCH "package_path_passwd.lua:3: package.path cannot be changed" NOMATCH "root:|/etc/passwd")
+pl_sec_test(searchpath RC 1 ARGS run ${PL_SEC}/searchpath.lua --quiet
+  MATCH "searchpath.lua:2: package.searchpath is not allowed" NOMATCH "/etc/passwd")
+pl_sec_test(require_outside RC 1 ARGS run ${PL_SEC}/require_outside.lua --quiet
+  MATCH "require_outside.lua:2: require: '..passwd' is not a module name")
+# A dangling symbolic link in the output folder does not redirect writes outside it.
+foreach(probe io:txt:io.open csv:csv:csv chart:png:chart)
+  string(REPLACE ":" ";" p "${probe}")
+  list(GET p 0 kind)
+  list(GET p 1 ext)
+  list(GET p 2 fn)
+  add_test(NAME cli_sec_link_${kind} COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
+    "-DARGS=run|${PL_SEC}/link_${kind}.lua|--quiet|--out|${PL_SEC_OUT}/link_${kind}"
+    -DEXPECT_RC=1 -DWORKDIR=${CMAKE_SOURCE_DIR}
+    -DOUT_DIR=${PL_SEC_OUT}/link_${kind} -DLINK=link.${ext}
+    -DTARGET=${PL_SEC_OUT}/escaped_${kind}.${ext} -DNO_FILE=${PL_SEC_OUT}/escaped_${kind}.${ext}
+    "-DMATCH=link_${kind}.lua:[23]: ${fn}: 'link.${ext}' is a symbolic link"
+    -P ${PL_CLI_DIR}/security/with_link.cmake)
+  set_tests_properties(cli_sec_link_${kind} PROPERTIES LABELS "cli;security" TIMEOUT 30)
+endforeach()
+# A VTK prefix naming the output folder ("", ".", "./") would write beside it.
+pl_sec_test(vtk_dot RC 1 ARGS run ${PL_SEC}/vtk_dot.lua --quiet --out ${PL_SEC_OUT}/vtk_dot
+  MATCH "vtk_dot.lua:9: write_vtk: '.' names a folder, not a file"
+  MATCH2 "refused: .*vtk_dot.lua:6: write_vtk: '' names a folder.*refused: .*'./' names a folder"
+  NO_FILE ${PL_SEC_OUT}/vtk_dot_bodies.vtu)
+# CPU time and memory: endless loops (scene file, hook, behind pcall, in C calls) and
+# runaway data stop with the line where they were.
+pl_sec_test(cpu_loop RC 1 ARGS run ${PL_SEC}/cpu_loop.lua --quiet --max-cpu 1
+  MATCH "cpu_loop.lua:3: the scene ran out of CPU time: more than 1 s running the scene file \\(--max-cpu")
+pl_sec_test(cpu_hook RC 1 ARGS run ${PL_SEC}/cpu_hook.lua --quiet --max-cpu 1
+  --out ${PL_SEC_OUT}/cpu_hook
+  MATCH "cpu_hook.lua:10: the scene ran out of CPU time: more than 1 s in one call"
+  MATCH2 "on_frame hook raised an error")
+pl_sec_test(cpu_pcall RC 1 ARGS run ${PL_SEC}/cpu_pcall.lua --quiet --max-cpu 1
+  MATCH "cpu_pcall.lua:[345]: the scene ran out of CPU time")
+pl_sec_test(cpu_c_calls RC 1 ARGS run ${PL_SEC}/cpu_c_calls.lua --quiet --max-cpu 1
+  MATCH "cpu_c_calls.lua:5: the scene ran out of CPU time")
+pl_sec_test(cpu_coroutine RC 1 ARGS run ${PL_SEC}/cpu_coroutine.lua --quiet --max-cpu 1
+  MATCH "cpu_coroutine.lua:[23]: the scene ran out of CPU time")
+pl_sec_test(cpu_long_c_call RC 1 ARGS run ${PL_SEC}/cpu_long_c_call.lua --quiet --max-cpu 1
+  MATCH "cpu_long_c_call.lua:5: the scene ran out of CPU time: more than 1 s, then 1 s more inside one call of a porelab function")
+pl_sec_test(gc_finalizer RC 1 ARGS run ${PL_SEC}/cpu_gc.lua --quiet
+  MATCH "cpu_gc.lua:3: setmetatable: a __gc metamethod \\(finalizer\\) is not allowed")
+pl_sec_test(coroutines_work RC 0 ARGS run ${PL_SEC}/coroutine_ok.lua --quiet MATCH "coroutines ok")
+pl_sec_test(cpu_trust_explicit RC 1 ARGS run ${PL_SEC}/cpu_loop.lua --quiet --trust --max-cpu 0.5
+  MATCH "cpu_loop.lua:3: the scene ran out of CPU time: more than 0.5 s")
+pl_sec_test(mem_double RC 1 ARGS run ${PL_SEC}/mem_double.lua --quiet --max-memory 64
+  MATCH "mem_double.lua:4: out of memory: the scene's Lua data would pass the limit of 64 MB \\(--max-memory")
+pl_sec_test(mem_table RC 1 ARGS run ${PL_SEC}/mem_table.lua --quiet --max-memory 64
+  MATCH "mem_table.lua:[4-6]: out of memory: the scene's Lua data passed the limit of 64 MB")
+pl_sec_test(mem_default RC 1 ARGS run ${PL_SEC}/mem_rep.lua --quiet
+  MATCH "mem_rep.lua:2: out of memory: .*limit of 1024 MB" NOMATCH "1073741824")
+pl_sec_test(max_cpu_range RC 2 ARGS run ${PL_SEC}/cpu_loop.lua --max-cpu 0
+  MATCH "porelab run: --max-cpu must be a number of seconds in \\[0.001, 1e\\+07\\] \\(got '0'\\)")
+pl_sec_test(max_memory_range RC 2 ARGS info ${PL_SEC}/cpu_loop.lua --max-memory lots
+  MATCH "porelab info: --max-memory must be a number of megabytes in \\[16, 1.04858e\\+06\\] \\(got 'lots'\\)")
+# Errors raised in C or in an embedded helper, and checks on the returned table, name the
+# scene line.
+pl_sec_test(c_stack_overflow RC 1 ARGS run ${PL_SEC}/c_stack_overflow.lua --quiet
+  MATCH "c_stack_overflow.lua:3: C stack overflow")
+pl_sec_test(gsub_overflow RC 1 ARGS run ${PL_SEC}/gsub_overflow.lua --quiet
+  MATCH "gsub_overflow.lua:2: C stack overflow")
+pl_sec_test(helper_error_line RC 1 ARGS run ${PL_SEC}/mimes_helper_error.lua --quiet
+  MATCH "mimes_helper_error.lua:4: porelab.mimes:[0-9]+: ")
+pl_sec_test(return_table_line RC 1 ARGS run ${PL_SEC}/return_table_line.lua --quiet
+  --out ${PL_SEC_OUT}/return_table_line
+  MATCH "return_table_line.lua:6: run: fps must be in \\(0, 10000\\]")
+# Names and messages: no empty --out, no newline or NUL in file names, no escape codes.
+add_test(NAME cli_sec_out_empty COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
+  -DWORKDIR=${CMAKE_SOURCE_DIR} -P ${PL_CLI_DIR}/security/out_empty.cmake)
+set_tests_properties(cli_sec_out_empty PROPERTIES LABELS "cli;security" TIMEOUT 30)
+pl_sec_test(name_newline RC 1 ARGS run ${PL_SEC}/name_newline.lua --quiet
+  --out ${PL_SEC_OUT}/name_newline
+  MATCH "name_newline.lua:2: io.open: the file name contains a control character \\(byte 0x0a")
+pl_sec_test(name_nul RC 1 ARGS run ${PL_SEC}/name_nul.lua --quiet --out ${PL_SEC_OUT}/name_nul
+  MATCH "name_nul.lua:2: csv: the file name contains a NUL byte"
+  NO_FILE ${PL_SEC_OUT}/name_nul/data.csv)
+string(ASCII 27 pl_esc)
+pl_sec_test(escape_codes RC 1 ARGS run ${PL_SEC}/escape_codes.lua --quiet
+  MATCH "escape_codes.lua:2: \\\\x1b\\[2J\\\\x1b\\]0;owned\\\\x07 cleared" NOMATCH "${pl_esc}")

@@ -1,0 +1,10 @@
+-- coroutines still work in the sandbox: create, resume, yield, wrap, errors through wrap
+local gen = coroutine.wrap(function(a) local b = coroutine.yield(a + 1); return b * 2 end)
+assert(gen(1) == 2 and gen(5) == 10)
+local co = coroutine.create(function(x) coroutine.yield(x); error("inside") end)
+assert(select(2, coroutine.resume(co, 7)) == 7)
+local ok, err = coroutine.resume(co)
+assert(not ok and err:match("coroutine_ok.lua:4: inside"))
+local ok2, err2 = pcall(coroutine.wrap(function() error({ code = 3 }) end))
+assert(not ok2 and err2.code == 3)
+print("coroutines ok")

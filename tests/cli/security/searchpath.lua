@@ -1,0 +1,2 @@
+-- security: package.searchpath would tell whether any file exists
+print(package.searchpath("passwd", "/etc/?"))
