@@ -115,6 +115,8 @@ pl_status pl__image_get(pl_image *img, void *data, size_t bytes);
 /* arrays with their element count: put writes the count, get checks it against `count` */
 pl_status pl__image_put_array(pl_image *img, const void *data, size_t elem, size_t count);
 pl_status pl__image_get_array(pl_image *img, void *data, size_t elem, size_t count);
+/* bytes not read yet (check a count against it before allocating for it) */
+size_t pl__image_left(const pl_image *img);
 
 /* The model classes built into this engine (world/models.c lists them). */
 extern const pl_model_class pl_darcy_class;
