@@ -222,3 +222,5 @@ pl_cli_test(restart_other_scene RC 1
        --out ${PL_CLI_OUT}/restart_other
   MATCH "--resume .*: load state: the file is of a world with [0-9]+ bodies.*this one has")
 set_tests_properties(cli_restart_other_scene PROPERTIES DEPENDS cli_restart_demo)
+pl_cli_test(lua_state_files RC 0 ARGS run tests/cli/lua/state.lua --out ${PL_CLI_OUT}/lua_state
+  MATCH "state.lua: [0-9a-f]+ ok; refused: .*not a porelab state file")
