@@ -271,3 +271,64 @@ void pl_restart_close(pl_restart **r)
     free(*r);
     *r = NULL;
 }
+
+void pl_restart_frame_at(const pl_run_plan *p, long long done, long long *index, long long *step)
+{
+    long long j = p->every > 0 ? done / p->every : (long long)floor((double)done * p->dt * p->fps);
+    while (j > 0 && pl_run_plan_frame_step(p, j) >= done) j--;
+    while (pl_run_plan_frame_step(p, j) < done) j++;
+    *index = j;
+    *step = pl_run_plan_frame_step(p, j);
+}
+
+#include <dirent.h>
+
+int pl_restart_load_nearest(const char *dir, pl_world *w, long long start_step, long long target, int *loaded,
+                            char *used, size_t n)
+{
+    *loaded = 0;
+    DIR *d = opendir(dir);
+    if (!d) {
+        fprintf(stderr, "porelab still: --from-state: cannot open %s: %s\n", dir, strerror(errno));
+        return -1;
+    }
+    char best[4200] = "";
+    long long best_step = -1;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        const size_t len = strlen(e->d_name);
+        if (len < 8 || strcmp(e->d_name + len - 8, ".plstate") != 0) continue;
+        char path[4200], err[512];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        FILE *f = fopen(path, "rb");
+        if (!f) continue;
+        unsigned char head[72];
+        const size_t got = fread(head, 1, sizeof head, f);
+        fclose(f);
+        pl_state_info info;
+        if (pl_state_info_of(head, got, &info, err, sizeof err) != PL_OK) continue; /* not ours, or another build */
+        const long long s = (long long)info.step - start_step;
+        if (s >= 0 && s <= target && s > best_step && info.bodies == pl_world_body_count(w)) {
+            best_step = s;
+            snprintf(best, sizeof best, "%s", path);
+        }
+    }
+    closedir(d);
+    if (best_step < 0) return 0;
+    char err[1024];
+    size_t len = 0;
+    void *bytes = pl_restart_read_file(best, &len, err, sizeof err);
+    if (!bytes) {
+        fprintf(stderr, "porelab still: --from-state: %s\n", err);
+        return -1;
+    }
+    pl_status st = pl_world_load_state(w, bytes, len);
+    free(bytes);
+    if (st != PL_OK) {
+        fprintf(stderr, "porelab still: --from-state %s: %s\n", best, pl_world_last_error(w));
+        return -1;
+    }
+    *loaded = 1;
+    snprintf(used, n, "%s", best);
+    return 0;
+}

@@ -45,3 +45,13 @@ void *pl_restart_read_file(const char *path, size_t *len, char *err, size_t errl
 int pl_restart_write_file(const char *path, const void *bytes, size_t len, char *err, size_t errlen);
 
 #endif
+
+/* porelab still --from-state DIR: loads the restart file of DIR with the latest step at or
+   before `target` steps after the run's start (start_step: the world's step count then) into
+   w. 0 with *loaded 1 (and the file's name in used) or 0 (no such file: w is left alone), or -1
+   after printing the error. */
+int pl_restart_load_nearest(const char *dir, pl_world *w, long long start_step, long long target, int *loaded,
+                            char *used, size_t n);
+
+/* The first frame at or after `done` steps: its index and its step. */
+void pl_restart_frame_at(const pl_run_plan *p, long long done, long long *index, long long *step);

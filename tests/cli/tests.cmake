@@ -224,3 +224,8 @@ pl_cli_test(restart_other_scene RC 1
 set_tests_properties(cli_restart_other_scene PROPERTIES DEPENDS cli_restart_demo)
 pl_cli_test(lua_state_files RC 0 ARGS run tests/cli/lua/state.lua --out ${PL_CLI_OUT}/lua_state
   MATCH "state.lua: [0-9a-f]+ ok; refused: .*not a porelab state file")
+add_test(NAME cli_still_from_state
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab> -DSCENE=scenes/demo.lua -DOUT=${PL_CLI_OUT}/still_from_state
+          -DSTEPS=600 -DEVERY=0.03 -DAT=0.1 -P ${PL_CLI_DIR}/still_from_state.cmake
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(cli_still_from_state PROPERTIES LABELS cli TIMEOUT 120)
