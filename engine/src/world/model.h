@@ -75,7 +75,12 @@ typedef struct pl_model_class {
     pl_status (*restore)(void *self, pl_world *w, const void *snap);
     void (*snapshot_free)(void *snap);
     /* State image (restart files): write every piece of state; read it back into a model of
-       the same scene. */
+       the same scene (a fresh instance from create when the world has none). The world frames
+       the output as one checksummed section (world/snapshot_file.c), so load only has to
+       refuse what does not fit: start with a layout word of the model's own (a hash of the
+       sizes of what it writes, as fluid/darcy/darcy_snapshot.c does), read counted arrays
+       with pl__image_get_array after checking pl__image_left, and read the section to its end.
+       NULL save: worlds with this model cannot be saved (PL_ERR_NOT_BUILT). */
     pl_status (*save)(const void *self, pl_image *img);
     pl_status (*load)(void *self, pl_world *w, pl_image *img);
     /* Seconds of CPU spent per call of advance + loads so far (for `porelab info`), may be NULL. */
