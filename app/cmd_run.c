@@ -58,6 +58,7 @@ typedef struct run_ctx {
     double last_frame_time;
     pl_gl_frames *gfw; /* --renderer gl: frames drawn by OpenGL instead of fw (last member) */
     pl_restart *rs;    /* restart files (restart.c), NULL without --save-every/--save-at/--resume */
+    int first_frame;   /* index of the first frame this process writes (a resumed run: > 0) */
 } run_ctx;
 
 static long long steps_done(const run_ctx *c)
@@ -117,6 +118,7 @@ static int step_loop(run_ctx *c, pl_progress *prog)
     int draw_first = 1, first_index = 0;
     pl_restart_frames(c->rs, p, &k, &draw_first, &first_index); /* a resumed run goes on numbering */
     if (c->fw) pl_frame_writer_start_at(c->fw, first_index);
+    c->first_frame = first_index;
     long long next = pl_run_plan_frame_step(p, k);
     if (draw_first && frame(c) != 0) return -1;
     if (pl_restart_after_steps(c->rs, c->w, steps_done(c)) != 0) return print_stop(c, pl_restart_error(c->rs)), -1;
@@ -183,8 +185,9 @@ static void print_summary(const run_ctx *c, double wall)
         snprintf(interval, sizeof interval, "every %lld steps", p->every);
     else
         snprintf(interval, sizeof interval, "%g per simulated second", p->fps);
-    printf("  %-15s%d in %s/ (frame_000000.png .. frame_%06d.png; %s, from %s)\n", "frames",
-           frames, c->out_dir, frames > 0 ? frames - 1 : 0, interval, p->frames_from);
+    printf("  %-15s%d in %s/ (frame_%06d.png .. frame_%06d.png; %s, from %s)\n", "frames",
+           frames - c->first_frame, c->out_dir, c->first_frame, frames > 0 ? frames - 1 : 0, interval,
+           p->frames_from);
 }
 
 static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
@@ -198,7 +201,7 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     pl_draw_list overlay;
     pl_draw_list_init(&overlay);
     run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL, NULL,
-                 (long long)pl_world_step_count(w), 0, NULL, NULL};
+                 (long long)pl_world_step_count(w), 0, NULL, NULL, 0};
     if ((rc = pl_restart_open(&c.rs, o, &plan, w, out_dir, c.start_step)) != 0) {
         pl_draw_list_free(&overlay);
         return rc;
