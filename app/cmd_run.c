@@ -3,6 +3,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "progress.h"
+#include "restart.h"
 #include "report.h"
 #include "run_plan.h"
 #include "vtk_series.h"
@@ -30,6 +31,7 @@ static const pl_opt_spec run_specs[] = {
     {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
     {"--renderer", NULL, "NAME", "cairo (default) or gl (OpenGL through OSMesa) for the frames"},
     {"--window", NULL, NULL, "open the live lab window instead of writing frames (porelab view)"},
+    PL_RESTART_OPTION_ROWS,
     {NULL, NULL, NULL, NULL}};
 
 static const pl_command_help run_help = {
@@ -55,6 +57,8 @@ typedef struct run_ctx {
     long long start_step;
     double last_frame_time;
     pl_gl_frames *gfw; /* --renderer gl: frames drawn by OpenGL instead of fw (last member) */
+    pl_restart *rs;    /* restart files (restart.c), NULL without --save-every/--save-at/--resume */
+    int first_frame;   /* index of the first frame this process writes (a resumed run: > 0) */
 } run_ctx;
 
 static long long steps_done(const run_ctx *c)
@@ -120,10 +124,16 @@ static int step_loop(run_ctx *c, pl_progress *prog)
     const pl_run_plan *p = c->plan;
     double t_end = p->t_start + (double)p->total_steps * p->dt;
     long long chunk = 16, k = 1;
+    int draw_first = 1, first_index = 0;
+    pl_restart_frames(c->rs, p, &k, &draw_first, &first_index); /* a resumed run goes on numbering */
+    if (c->fw) pl_frame_writer_start_at(c->fw, first_index);
+    c->first_frame = first_index;
     long long next = pl_run_plan_frame_step(p, k);
-    if (frame(c) != 0) return -1;
+    if (draw_first && frame(c) != 0) return -1;
+    if (pl_restart_after_steps(c->rs, c->w, steps_done(c)) != 0) return print_stop(c, pl_restart_error(c->rs)), -1;
     while (steps_done(c) < p->total_steps) {
         long long target = next < p->total_steps ? next : p->total_steps;
+        target = pl_restart_clip(c->rs, target, steps_done(c)); /* stop at the next restart file */
         long long n = target - steps_done(c);
         if (prog->enabled && n > chunk) n = chunk;
         if (n > INT_MAX) n = INT_MAX;
@@ -142,6 +152,11 @@ static int step_loop(run_ctx *c, pl_progress *prog)
                 if (chunk > 1000000) chunk = 1000000;
             }
             pl_progress_update(prog, steps_done(c), pl_world_time(c->w), t_end);
+        }
+        if (pl_restart_after_steps(c->rs, c->w, steps_done(c)) != 0) {
+            pl_progress_finish(prog);
+            print_stop(c, pl_restart_error(c->rs));
+            return -1;
         }
         /* >= rather than ==: a hook may have stepped the world itself. */
         if (steps_done(c) >= next) {
@@ -179,8 +194,9 @@ static void print_summary(const run_ctx *c, double wall)
         snprintf(interval, sizeof interval, "every %lld steps", p->every);
     else
         snprintf(interval, sizeof interval, "%g per simulated second", p->fps);
-    printf("  %-15s%d in %s/ (frame_000000.png .. frame_%06d.png; %s, from %s)\n", "frames",
-           frames, c->out_dir, frames > 0 ? frames - 1 : 0, interval, p->frames_from);
+    printf("  %-15s%d in %s/ (frame_%06d.png .. frame_%06d.png; %s, from %s)\n", "frames",
+           frames - c->first_frame, c->out_dir, c->first_frame, frames > 0 ? frames - 1 : 0, interval,
+           p->frames_from);
 }
 
 static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
@@ -195,7 +211,11 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     pl_draw_list overlay;
     pl_draw_list_init(&overlay);
     run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL, NULL,
-                 (long long)pl_world_step_count(w), 0, NULL};
+                 (long long)pl_world_step_count(w), 0, NULL, NULL, 0};
+    if ((rc = pl_restart_open(&c.rs, o, &plan, w, out_dir, c.start_step)) != 0) {
+        pl_draw_list_free(&overlay);
+        return rc;
+    }
     char err[1024];
     const char *video = pl_opts_get(o, "--video");
     if (pl_gl_cli_parse_renderer(pl_opts_get(o, "--renderer"), "run") == 1)
@@ -240,6 +260,7 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     if (c.vtk && rc == PL_EXIT_OK && !quiet) printf("  %-15s%s/*.pvd (open in ParaView)\n", "vtk", out_dir);
     pl_vtk_series_close(&c.vtk);
     if (pl_opts_has(o, "--hash")) pl_cli_print_hash(w);
+    pl_restart_close(&c.rs);
     pl_draw_list_free(&overlay);
     return rc;
 }

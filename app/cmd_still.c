@@ -4,6 +4,7 @@
 #include "render/drawlist.h"
 #include "gl_cli.h"
 #include "report.h"
+#include "restart.h"
 #include "run_plan.h"
 
 #include <limits.h>
@@ -23,6 +24,7 @@ static const pl_opt_spec still_specs[] = {
     {"--renderer", NULL, "NAME", "cairo (default) or gl (OpenGL through OSMesa; PNG only)"},
     {"--fps", NULL, "F", "frame rate of the run whose on_frame hooks are replayed (as for run)"},
     {"--every", NULL, "N", "or: steps between those frames (as for run)"},
+    {"--from-state", NULL, "DIR", "start from the latest restart file in DIR at or before --at (run --save-every)"},
     {NULL, NULL, NULL, NULL}};
 
 static const pl_command_help still_help = {
@@ -44,11 +46,17 @@ static int has_extension(const char *path)
    every frame time of the run (from the scene's run table or PRINT_INT) before `at`, so that
    a scene that acts from its hooks (opening a gate, switching the fluid on) is in the same
    state as the run's frame at that time. */
-static pl_status step_like_run(const pl_opts *o, pl_scene *s, pl_world *w, const pl_run_plan *p,
-                               double at)
+static long long target_step(const pl_run_plan *p, double at)
 {
-    const long long start = (long long)pl_world_step_count(w);
-    const long long target = pl_run_plan_steps_to(p, at);
+    return pl_run_plan_steps_to(p, at); /* saturates: never overflows */
+}
+
+/* start: the world's step count at the run's start (a restart file may have been loaded since:
+   the hooks of frames before its step are not called, as in `porelab run --resume`) */
+static pl_status step_like_run(const pl_opts *o, pl_scene *s, pl_world *w, const pl_run_plan *p,
+                               double at, long long start)
+{
+    const long long target = target_step(p, at);
     if (target > PL_MAX_STEPS) {
         fprintf(stderr, "porelab still: --at %g s is %.3g steps of dt = %g s after the start; "
                         "the valid range is up to %.0e steps\n",
@@ -56,6 +64,10 @@ static pl_status step_like_run(const pl_opts *o, pl_scene *s, pl_world *w, const
         return PL_ERR_ARG;
     }
     long long k = 0, next = 0, index = 0;
+    if ((long long)pl_world_step_count(w) > start) {
+        pl_restart_frame_at(p, (long long)pl_world_step_count(w) - start, &index, &next);
+        k = index;
+    }
     for (;;) {
         long long done = (long long)pl_world_step_count(w) - start;
         /* the run draws frame k first and then calls on_frame(k); the figure at `target`
@@ -127,7 +139,16 @@ int pl_cmd_still(int argc, char **argv)
             st = PL_ERR_STATE;
         } else {
             rc = PL_EXIT_FAIL;
-            st = step_like_run(&o, s, w, &plan, at);
+            const long long start = (long long)pl_world_step_count(w);
+            int loaded = 0;
+            char used[4200];
+            if (pl_opts_has(&o, "--from-state") &&
+                pl_restart_load_nearest(pl_opts_get(&o, "--from-state"), w, start, target_step(&plan, at), &loaded,
+                                        used, sizeof used) != 0)
+                st = PL_ERR_STATE;
+            else if (loaded && !pl_opts_has(&o, "--quiet"))
+                printf("porelab: started from %s (t = %.6g s)\n", used, pl_world_time(w));
+            if (st == PL_OK) st = step_like_run(&o, s, w, &plan, at, start);
         }
         char err[1024];
         pl_draw_list overlay;

@@ -51,7 +51,10 @@ static int p_error(lua_State *L)
     return pl_lua_error(L, "%s", luaL_checkstring(L, 1));
 }
 
+int pl_lua_state_load(lua_State *L); /* wrap_state.c: porelab.load(w, path) */
+
 static const luaL_Reg porelab_functions[] = {{"world", pl_lua_world_new},
+                                             {"load", pl_lua_state_load},
                                              {"csv", pl_lua_csv_new},
                                              {"flags", p_flags},
                                              {"error", p_error},

@@ -208,7 +208,7 @@ static int send_all(int fd, const unsigned char *p, size_t n) {
 
 int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_options *opt,
                         char *err, size_t errlen) {
-    if (fw->count > 0 && (opt->width != fw->width || opt->height != fw->height)) {
+    if (fw->count > 0 && fw->width > 0 && (opt->width != fw->width || opt->height != fw->height)) {
         snprintf(err, errlen, "frame size changed from %dx%d to %dx%d during the run",
                  fw->width, fw->height, opt->width, opt->height);
         return -1;
@@ -245,6 +245,7 @@ int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_
 }
 
 int pl_frame_writer_count(const pl_frame_writer *fw) { return fw ? fw->count : 0; }
+void pl_frame_writer_start_at(pl_frame_writer *fw, int index) { if (fw && fw->count == 0 && index > 0) fw->count = index; }
 
 static int wait_ffmpeg(pid_t pid, const char *what, const char *log, char *err, size_t errlen) {
     int status = 0;

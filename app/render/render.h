@@ -119,6 +119,9 @@ pl_frame_writer *pl_frame_writer_open(const char *dir, const char *video_path, i
 int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_options *opt,
                         char *err, size_t errlen);
 int pl_frame_writer_count(const pl_frame_writer *fw);
+/// Numbers the next frame `index` (a run resumed from a restart file goes on numbering where
+/// the run that never stopped would be). Call before the first frame.
+void pl_frame_writer_start_at(pl_frame_writer *fw, int index);
 /// Finishes (closes the video pipe, waits for ffmpeg) and frees; nulls the pointer.
 /// Returns 0 or -1 with a message (for example when ffmpeg failed).
 int pl_frame_writer_close(pl_frame_writer **fw, char *err, size_t errlen);

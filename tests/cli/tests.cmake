@@ -314,3 +314,36 @@ pl_sec_test(name_nul RC 1 ARGS run ${PL_SEC}/name_nul.lua --quiet --out ${PL_SEC
 string(ASCII 27 pl_esc)
 pl_sec_test(escape_codes RC 1 ARGS run ${PL_SEC}/escape_codes.lua --quiet
   MATCH "escape_codes.lua:2: \\\\x1b\\[2J\\\\x1b\\]0;owned\\\\x07 cleared" NOMATCH "${pl_esc}")
+
+# Restart files (issue 12): run N steps == run K, save, new process, resume, run to N, bit for
+# bit, for a dry scene, a Darcy scene and a consolidation scene; damaged files are refused.
+foreach(case "demo;scenes/demo.lua;600;250" "quicksand;scenes/fluid_quicksand.lua;300;120"
+             "dam_flow;scenes/mimes/dam_flow.lua;200;77"
+             "consolidation;tests/cli/restart/consolidation.lua;3000;1700")
+  list(GET case 0 name)
+  list(GET case 1 scene)
+  list(GET case 2 n)
+  list(GET case 3 k)
+  add_test(NAME cli_restart_${name}
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab> -DSCENE=${scene} -DOUT=${PL_CLI_OUT}/restart_${name}
+            -DN=${n} -DK=${k} -P ${PL_CLI_DIR}/restart.cmake
+    WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+  set_tests_properties(cli_restart_${name} PROPERTIES LABELS cli TIMEOUT 120)
+endforeach()
+pl_cli_test(restart_save_every RC 0
+  ARGS run scenes/demo.lua --steps 300 --every 1000000 --quiet --save-every 0.02 --out ${PL_CLI_OUT}/restart_every
+  EXPECT_FILE ${PL_CLI_OUT}/restart_every/state_0.020125.plstate)
+pl_cli_test(restart_bad_save_at RC 2 ARGS run scenes/demo.lua --steps 10 --quiet --save-at 0.1,soon
+  MATCH "porelab run: --save-at must be a comma list of times in s or 'end' \\(got '0.1,soon'\\)")
+pl_cli_test(restart_other_scene RC 1
+  ARGS run scenes/heaps.lua --steps 10 --quiet --resume ${PL_CLI_OUT}/restart_demo/first/state_0.057831.plstate
+       --out ${PL_CLI_OUT}/restart_other
+  MATCH "--resume .*: load state: the file is of a world with [0-9]+ bodies.*this one has")
+set_tests_properties(cli_restart_other_scene PROPERTIES DEPENDS cli_restart_demo)
+pl_cli_test(lua_state_files RC 0 ARGS run tests/cli/lua/state.lua --out ${PL_CLI_OUT}/lua_state
+  MATCH "state.lua: [0-9a-f]+ ok; refused: .*not a porelab state file")
+add_test(NAME cli_still_from_state
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab> -DSCENE=scenes/demo.lua -DOUT=${PL_CLI_OUT}/still_from_state
+          -DSTEPS=600 -DEVERY=0.03 -DAT=0.1 -P ${PL_CLI_DIR}/still_from_state.cmake
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
+set_tests_properties(cli_still_from_state PROPERTIES LABELS cli TIMEOUT 120)

@@ -9,6 +9,7 @@ pl_add_c_test(test_fluid_bed SOURCES ${PL_TEST_DIR}/fluid/test_fluid_bed.c LABEL
 pl_add_c_test(test_fluid_porosity SOURCES ${PL_TEST_DIR}/fluid/test_fluid_porosity.c LABEL fluid TIMEOUT 60)
 target_include_directories(test_fluid_porosity PRIVATE ${CHOLMOD_INCLUDE})
 pl_add_c_test(test_fluid_snapshot SOURCES ${PL_TEST_DIR}/fluid/test_fluid_snapshot.c LABEL fluid TIMEOUT 60)
+pl_add_c_test(test_state_file SOURCES ${PL_TEST_DIR}/fluid/test_state_file.c LABEL fluid TIMEOUT 120)
 pl_add_c_test(test_fluid_frame SOURCES ${PL_TEST_DIR}/fluid/test_fluid_frame.c LABEL fluid TIMEOUT 60)
 # Benchmark (not a test): tests/bench/bench_fluid.c; FreeFEM++ comparison: tests/bench/run_freefem.sh
 add_executable(bench_fluid ${PL_TEST_DIR}/bench/bench_fluid.c)

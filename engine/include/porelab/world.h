@@ -339,6 +339,36 @@ double pl_snapshot_time(const pl_snapshot *s);
 size_t pl_snapshot_bytes(const pl_snapshot *s);
 void pl_snapshot_destroy(pl_snapshot **s);
 
+/* ------------------------------------------------------------ state files */
+
+/// The whole state of a world as bytes (a restart file): a header with a magic number, the
+/// format version and a layout hash, then one checksummed section for the grains and one per
+/// attached model (the layout: engine/src/world/snapshot_file.c, docs/user-guide.md "Restart
+/// files"). The engine opens no file: the host writes the bytes and reads them back.
+/// Loading them into a world built by the same scene and stepping on gives the bit-identical
+/// state hash of the run that never stopped.
+///
+/// Writes the state into a new buffer (*bytes, *len; free it with pl_state_free). PL_ERR_NOMEM
+/// when out of memory; PL_ERR_NOT_BUILT when an attached model cannot save its state.
+pl_status pl_world_save_state(const pl_world *w, void **bytes, size_t *len);
+/// Loads bytes written by pl_world_save_state into w, a world built by the same scene (same
+/// bodies, outline vertices and materials, as pl_world_restore requires). A truncated or
+/// damaged file gives PL_ERR_IO, a file of another format version or layout, or of another
+/// world, PL_ERR_STATE, with a message; nothing of w changes then (the message says so when a
+/// model fails after the checks: build the world again).
+pl_status pl_world_load_state(pl_world *w, const void *bytes, size_t len);
+void pl_state_free(void *bytes);
+
+/// What the header of a state file says (checked: magic, version, header checksum, layout).
+typedef struct pl_state_info {
+    int version;
+    double time;     ///< s
+    int64_t step;
+    int bodies, models;
+} pl_state_info;
+/// PL_OK and *out, or the status of pl_world_load_state with the message in err.
+pl_status pl_state_info_of(const void *bytes, size_t len, pl_state_info *out, char *err, size_t errlen);
+
 /* ------------------------------------------------------------------ flags */
 
 /// Flags with the MIMES names (seed 000 Appendix B/C): TIMESTEPS, MAX_DT_CR, GRAVITY_Y, ...

@@ -46,6 +46,8 @@ pl_status pl__image_get_array(pl_image *img, void *data, size_t elem, size_t cou
     return count ? pl__image_get(img, data, elem * count) : PL_OK;
 }
 
+size_t pl__image_left(const pl_image *img) { return img->failed ? 0 : img->len - img->pos; }
+
 void pl__image_free(pl_image *img) {
     free(img->data);
     memset(img, 0, sizeof *img);

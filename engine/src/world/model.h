@@ -78,7 +78,12 @@ typedef struct pl_model_class {
     pl_status (*restore)(void *self, pl_world *w, const void *snap);
     void (*snapshot_free)(void *snap);
     /* State image (restart files): write every piece of state; read it back into a model of
-       the same scene. */
+       the same scene (a fresh instance from create when the world has none). The world frames
+       the output as one checksummed section (world/snapshot_file.c), so load only has to
+       refuse what does not fit: start with a layout word of the model's own (a hash of the
+       sizes of what it writes, as fluid/darcy/darcy_snapshot.c does), read counted arrays
+       with pl__image_get_array after checking pl__image_left, and read the section to its end.
+       NULL save: worlds with this model cannot be saved (PL_ERR_NOT_BUILT). */
     pl_status (*save)(const void *self, pl_image *img);
     pl_status (*load)(void *self, pl_world *w, pl_image *img);
     /* The model's field for drawing, sampled on linear triangles: quantity is a
@@ -126,6 +131,8 @@ pl_status pl__image_get(pl_image *img, void *data, size_t bytes);
 /* arrays with their element count: put writes the count, get checks it against `count` */
 pl_status pl__image_put_array(pl_image *img, const void *data, size_t elem, size_t count);
 pl_status pl__image_get_array(pl_image *img, void *data, size_t elem, size_t count);
+/* bytes not read yet (check a count against it before allocating for it) */
+size_t pl__image_left(const pl_image *img);
 
 /* The model classes built into this engine (world/models.c lists them). */
 extern const pl_model_class pl_darcy_class;

@@ -5,6 +5,8 @@
  * the skin and so the rebuild times); its other buffers are scratch. Each attached model
  * captures its own state through its class (snapshot/restore of world/model.h). */
 #include "world/world_layer.h"
+#include "world/image_internal.h"
+#include "world/state_image.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -12,9 +14,10 @@
 typedef struct array_spec {
     size_t offset, elem;
     int count_kind; /* 0: n bodies, 1: verts_n, 2: pair_n, 3: materials, 4: materials^2, 5: flags */
+    const char *name; /* the field's name (state-image layout hash and messages) */
 } array_spec;
 
-#define A(field, kind) {offsetof(pl_world, field), sizeof(*((pl_world *)0)->field), kind}
+#define A(field, kind) {offsetof(pl_world, field), sizeof(*((pl_world *)0)->field), kind, #field}
 static const array_spec SPECS[] = {
     A(pos, 0), A(vel, 0), A(force, 0), A(angle, 0), A(omega, 0), A(torque, 0), A(mass, 0),
     A(inv_mass, 0), A(inertia, 0), A(inv_inertia, 0), A(radius, 0), A(area, 0), A(shape, 0),
@@ -112,6 +115,8 @@ pl_snapshot *pl_world_snapshot(pl_world *w) {
     return s;
 }
 
+static pl_status restore_grains(pl_world *w, const pl_snapshot *s);
+
 pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
     const pl_world *o = &s->w;
     if (o->n != w->n || o->verts_n != w->verts_n || o->material_count != w->material_count)
@@ -142,6 +147,12 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
         for (int j = 0; j < s->model_n; j++) kept |= s->models[j].cls == w->models[k].cls;
         if (!kept) pl__world_detach(w, w->models[k].cls);
     }
+    return restore_grains(w, s);
+}
+
+/* The grain store's part of a restore (also the last step of loading a state image). */
+static pl_status restore_grains(pl_world *w, const pl_snapshot *s) {
+    const pl_world *o = &s->w;
     if (s->is_large && w->class_cap < w->n) {
         uint8_t *a = realloc(w->is_large, (size_t)w->n);
         if (a) w->is_large = a;
@@ -203,3 +214,160 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
 
 double pl_snapshot_time(const pl_snapshot *s) { return s->w.time; }
 size_t pl_snapshot_bytes(const pl_snapshot *s) { return s->bytes; }
+
+/* ------------------------------------------------------------ state image: grains section */
+
+pl_status pl__grains_restore(pl_world *w, const pl_snapshot *s) { return restore_grains(w, s); }
+
+/* dt_report.limit_kind points at one of these string literals: the image keeps its index */
+static const char *const LIMIT_KINDS[] = {"none", "translation", "rotation"};
+#define NLIMIT ((int)(sizeof LIMIT_KINDS / sizeof LIMIT_KINDS[0]))
+
+uint64_t pl__grains_layout(uint64_t h) {
+    const uint32_t order = 0x01020304u; /* byte order */
+    const uint64_t sizes[] = {sizeof(pl_world), sizeof(pl_pair), sizeof(pl_motion), sizeof(pl_material),
+                              sizeof(pl_pair_params), sizeof(pl_pair_def), sizeof(pl_tally), sizeof(pl_vec2),
+                              sizeof(pl_world_def), sizeof(pl_dt_report), sizeof(int), sizeof(long),
+                              sizeof(void *), sizeof(double),
+                              offsetof(pl_world, time), offsetof(pl_world, step), offsetof(pl_world, dt),
+                              offsetof(pl_world, n), offsetof(pl_world, pair_n), offsetof(pl_world, large_n),
+                              offsetof(pl_world, e_damped), offsetof(pl_world, dt_report),
+                              offsetof(pl_world, flag_values), offsetof(pl_world, models)};
+    h = pl_hash_bytes(h, &order, sizeof order);
+    h = pl_hash_bytes(h, sizes, sizeof sizes);
+    for (int k = 0; k < NSPECS; k++) {
+        const uint64_t v[3] = {SPECS[k].offset, SPECS[k].elem, (uint64_t)SPECS[k].count_kind};
+        h = pl_hash_bytes(h, v, sizeof v);
+        h = pl_hash_bytes(h, SPECS[k].name, strlen(SPECS[k].name));
+    }
+    /* the flag values are an array over the flag table: its rows and their order */
+    for (int k = 0; k < pl_flag_count(); k++) h = pl_hash_bytes(h, pl_flag_at(k)->name, strlen(pl_flag_at(k)->name) + 1);
+    return h;
+}
+
+/* The scalars are written as one raw copy of struct pl_world (the same shallow copy an
+   in-memory snapshot keeps) with every pointer nulled, the message, capacities and
+   attachments cleared (a restore keeps the live ones), and dt_report.limit_kind (a pointer to
+   a string literal) written apart as an index. */
+pl_status pl__grains_save(const pl_world *w, pl_image *img) {
+    pl_world c;
+    memset(&c, 0, sizeof c);
+    memcpy(&c, w, sizeof c);
+    for (int k = 0; k < NSPECS; k++) *field_ptr(&c, &SPECS[k]) = NULL;
+    c.pairs_scratch = NULL;
+    c.is_large = NULL;
+    c.large_list = NULL;
+    c.cand = NULL;
+    c.cell_start = c.cell_items = c.body_cell = c.cursor = NULL;
+    c.ext_force = NULL;
+    c.ext_moment = NULL;
+    c.wants_load = NULL;
+    c.models = NULL;
+    c.cap = c.material_cap = c.verts_cap = c.pair_cap = c.pair_scratch_cap = c.class_cap = 0;
+    c.cand_cap = c.cell_cap = c.cell_items_cap = c.body_cell_cap = c.cursor_cap = 0;
+    c.model_n = c.model_cap = c.ext_cap = 0;
+    memset(c.error, 0, sizeof c.error);
+    int32_t kind = 0;
+    for (int k = 0; k < NLIMIT; k++)
+        if (w->dt_report.limit_kind && strcmp(w->dt_report.limit_kind, LIMIT_KINDS[k]) == 0) kind = k;
+    c.dt_report.limit_kind = NULL;
+    pl_status st = pl__image_put(img, &c, sizeof c);
+    if (st == PL_OK) st = pl__image_put(img, &kind, sizeof kind);
+    for (int k = 0; k < NSPECS && st == PL_OK; k++) {
+        const size_t count = count_of(w, SPECS[k].count_kind);
+        const void *data = *field_ptr((pl_world *)w, &SPECS[k]);
+        if (SPECS[k].offset == offsetof(pl_world, materials) && count > 0) {
+            /* without the name pointers (restore points them at the names again) */
+            pl_material *m = malloc(count * sizeof *m);
+            if (!m) return PL_ERR_NOMEM;
+            memcpy(m, data, count * sizeof *m);
+            for (size_t i = 0; i < count; i++) m[i].def.name = NULL;
+            st = pl__image_put_array(img, m, SPECS[k].elem, count);
+            free(m);
+        } else {
+            st = pl__image_put_array(img, data, SPECS[k].elem, count);
+        }
+    }
+    /* the broadphase's grid/large split (see pl_world_snapshot) */
+    const uint8_t has_large = w->class_cap >= w->n && w->n > 0 && w->is_large;
+    if (st == PL_OK) st = pl__image_put(img, &has_large, 1);
+    if (st == PL_OK && has_large) st = pl__image_put_array(img, w->is_large, 1, (size_t)w->n);
+    if (st == PL_OK && has_large)
+        st = pl__image_put_array(img, w->large_list, sizeof *w->large_list, (size_t)w->large_n);
+    return st;
+}
+
+/* A counted array of `count` elements read into new memory (NULL for none); fails without
+   allocating when the image has fewer bytes left than the array needs. */
+static pl_status get_new_array(pl_image *img, void **out, size_t elem, size_t count) {
+    *out = NULL;
+    if (count > 0) {
+        if (count > (SIZE_MAX - 16) / elem || 16 + elem * count > img->len - img->pos) return img->failed = 1, PL_ERR_IO;
+        *out = malloc(elem * count);
+        if (!*out) return PL_ERR_NOMEM;
+    }
+    return pl__image_get_array(img, *out, elem, count);
+}
+
+pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
+    *out = NULL;
+    pl_snapshot *s = calloc(1, sizeof *s);
+    if (!s) return pl__error(w, PL_ERR_NOMEM, "load state: out of memory");
+    int32_t kind = 0;
+    if (pl__image_get(img, &s->w, sizeof s->w) != PL_OK || pl__image_get(img, &kind, sizeof kind) != PL_OK) {
+        free(s);
+        return pl__error(w, PL_ERR_IO, "load state: the grains section ends inside the world's scalars");
+    }
+    pl_world *o = &s->w;
+    memset(o->error, 0, sizeof o->error);
+    o->dt_report.limit_kind = LIMIT_KINDS[kind >= 0 && kind < NLIMIT ? kind : 0];
+    o->models = NULL;
+    if (o->n != w->n || o->verts_n != w->verts_n || o->material_count != w->material_count) {
+        const int on = o->n, ov = o->verts_n, om = o->material_count;
+        free(s);
+        return pl__error(w, PL_ERR_STATE,
+                         "load state: the file is of a world with %d bodies, %d outline vertices and %d materials; "
+                         "this one has %d, %d and %d (load a state into the world its scene builds)",
+                         on, ov, om, w->n, w->verts_n, w->material_count);
+    }
+    if (o->pair_n < 0 || o->large_n < 0 || o->large_n > o->n) {
+        const int pn = o->pair_n, ln = o->large_n;
+        free(s);
+        return pl__error(w, PL_ERR_IO, "load state: damaged grains section (%d pairs, %d large bodies)", pn, ln);
+    }
+    pl_status st = PL_OK;
+    for (int k = 0; k < NSPECS && st == PL_OK; k++) {
+        st = get_new_array(img, &s->data[k], SPECS[k].elem, count_of(o, SPECS[k].count_kind));
+        if (st != PL_OK)
+            pl__error(w, st, st == PL_ERR_NOMEM ? "load state: out of memory for the array '%s'"
+                                                : "load state: the array '%s' of the grains section does not fit "
+                                                  "(damaged or of another build)",
+                      SPECS[k].name);
+    }
+    uint8_t has_large = 0;
+    if (st == PL_OK && (st = pl__image_get(img, &has_large, 1)) != PL_OK)
+        pl__error(w, st, "load state: the grains section ends before the broadphase split");
+    if (st == PL_OK && has_large) {
+        void *a = NULL, *b = NULL;
+        st = get_new_array(img, &a, 1, (size_t)o->n);
+        if (st == PL_OK) st = get_new_array(img, &b, sizeof *s->large_list, (size_t)o->large_n);
+        s->is_large = a;
+        s->large_list = b;
+        if (st == PL_OK && !s->large_list) { /* large_n = 0: restore copies nothing but wants a buffer */
+            s->large_list = malloc(sizeof *s->large_list);
+            if (!s->large_list) st = PL_ERR_NOMEM;
+        }
+        if (st != PL_OK) pl__error(w, st, "load state: the broadphase split of the grains section does not fit");
+    }
+    if (st == PL_OK && img->pos != img->len) {
+        st = PL_ERR_IO;
+        pl__error(w, st, "load state: %zu unread bytes at the end of the grains section (damaged or of another build)",
+                  img->len - img->pos);
+    }
+    if (st != PL_OK) {
+        pl_snapshot_destroy(&s);
+        return st;
+    }
+    *out = s;
+    return PL_OK;
+}

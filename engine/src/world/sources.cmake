@@ -5,4 +5,5 @@ list(APPEND PL_ENGINE_SOURCES
   src/world/flags.c
   src/world/snapshot.c
   src/world/image.c
+  src/world/snapshot_file.c
   src/world/hash.c)

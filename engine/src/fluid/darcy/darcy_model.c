@@ -123,6 +123,8 @@ void pl__darcy_snapshot_free(void *snap) {
     pl_fl_snapshot *z = snap;
     pl__fluid_snapshot_free(&z);
 }
+pl_status pl__darcy_save(const void *self, pl_image *img) { return pl__fluid_save(self, img); }
+pl_status pl__darcy_load(void *self, pl_world *w, pl_image *img) { return pl__fluid_load(w, self, img); }
 double pl__darcy_cost(const void *self, long *calls) {
     const struct pl_fluid *f = self;
     if (calls) *calls = f->stats.updates;

@@ -13,6 +13,8 @@ uint64_t pl__darcy_hash(const void *self, uint64_t h);
 void *pl__darcy_snapshot(const void *self, size_t *bytes);
 pl_status pl__darcy_restore(void *self, pl_world *w, const void *snap);
 void pl__darcy_snapshot_free(void *snap);
+pl_status pl__darcy_save(const void *self, pl_image *img);
+pl_status pl__darcy_load(void *self, pl_world *w, pl_image *img);
 double pl__darcy_cost(const void *self, long *calls);
 void pl__darcy_destroy(void *self);
 pl_status pl__darcy_prepare(void *self, pl_world *w);

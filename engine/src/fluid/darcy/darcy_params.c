@@ -88,8 +88,8 @@ const pl_model_class pl_darcy_class = {
     .snapshot = pl__darcy_snapshot,
     .restore = pl__darcy_restore,
     .snapshot_free = pl__darcy_snapshot_free,
-    .save = NULL, /* restart files: world/snapshot_file.c */
-    .load = NULL,
+    .save = pl__darcy_save, /* restart files (world/snapshot_file.c) */
+    .load = pl__darcy_load,
     .cost = pl__darcy_cost,
     .destroy = pl__darcy_destroy,
 };

@@ -32,6 +32,7 @@
 #include "fluid/darcy/darcy_snapshot.h"
 #include "fluid/darcy/darcy_internal.h"
 #include "fluid/darcy/darcy_world.h"
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -337,4 +338,125 @@ uint64_t pl__fluid_hash(const struct pl_fluid *f, uint64_t h) {
     if (f->ref_pos) h = pl_hash_bytes(h, f->ref_pos, sizeof(pl_vec2) * (size_t)f->ref_n);
     if (f->par.force_reuse && f->fcache) h = pl_hash_bytes(h, f->fcache, sizeof(double) * 3 * (size_t)f->fcache_n);
     return h;
+}
+
+/* ------------------------------------------------------------ state image (restart files) */
+
+/* The snapshot's own scalars (sizes and flags of the arrays), besides PL_FL_SNAPSHOT_SCALARS. */
+#define PL_FL_SNAPSHOT_SIZES(X)                                                                 \
+    X(nq) X(nl) X(mesh_dirty) X(bc_dirty) X(built) X(nn) X(ne) X(nnz) X(ncover) X(cover_bodies) \
+    X(has_cover_start) X(ref_n) X(fcache_n) X(has_perm_user) X(has_cons)
+
+/* The snapshot's arrays and their element counts (from the scalars above: the counts the
+   capture gives them in pl__fluid_snapshot). */
+#define PL_FL_SNAPSHOT_ARRAYS(X)                                                                 \
+    X(quads, z->nq) X(lines, z->nl) X(head, z->nn) X(head_prev, z->nn) X(perm, z->ne)             \
+    X(perm_user, z->has_perm_user ? z->ne : 0) X(perm_assembled, z->ne) X(solid, z->ne)           \
+    X(voidr, z->ne) X(porosity, z->ne) X(grad, 2 * (size_t)z->ne) X(kval, z->nnz) X(mval, z->nnz) \
+    X(mlump, z->nn) X(src, z->has_cons ? z->nn : 0) X(stor, z->has_cons ? z->ne : 0)             \
+    X(stor_assembled, z->has_cons ? z->ne : 0) X(ref_pos, z->ref_n) X(ref_ang, z->ref_n)          \
+    X(cover, z->ncover) X(body_cover_start, z->has_cover_start ? (size_t)z->cover_bodies + 1 : 0) \
+    X(cover_xyr, z->has_cover_start ? 3 * (size_t)z->cover_bodies : 0) X(fcache, 3 * (size_t)z->fcache_n)
+
+/* Layout word of the Darcy section: the size of every field written (the structs among them
+   are written whole: pl_fl_params, pl_fluid_stats, pl_mesh_quad, pl_fl_line, pl_fl_cover) and
+   the names of the three lists, so that a build with another list or struct refuses the file. */
+static uint64_t darcy_layout(void) {
+    uint64_t h = PL_HASH_SEED;
+    const pl_fl_snapshot *z = NULL;
+#define PL_FL_LAYOUT(field)                                      \
+    {                                                            \
+        const uint64_t sz = sizeof z->field;                     \
+        h = pl_hash_bytes(h, #field, sizeof #field);             \
+        h = pl_hash_bytes(h, &sz, sizeof sz);                    \
+    }
+#define PL_FL_LAYOUT_ARRAY(field, count) PL_FL_LAYOUT(field[0])
+    PL_FL_SNAPSHOT_SIZES(PL_FL_LAYOUT)
+    PL_FL_SNAPSHOT_SCALARS(PL_FL_LAYOUT)
+    PL_FL_LAYOUT(geometry_file)
+    PL_FL_LAYOUT(pressures_file)
+    PL_FL_SNAPSHOT_ARRAYS(PL_FL_LAYOUT_ARRAY)
+#undef PL_FL_LAYOUT
+#undef PL_FL_LAYOUT_ARRAY
+    (void)z;
+    return h;
+}
+
+/* Writes the model's state: a capture as for rewind (pl__fluid_snapshot: one classification
+   of the fields, above), serialised field by field. */
+pl_status pl__fluid_save(const struct pl_fluid *f, pl_image *img) {
+    pl_fl_snapshot *z = pl__fluid_snapshot(f, NULL);
+    if (!z) return PL_ERR_NOMEM;
+    const uint64_t layout = darcy_layout();
+    pl_status st = pl__image_put(img, &layout, sizeof layout);
+#define PL_FL_PUT(field) \
+    if (st == PL_OK) st = pl__image_put(img, &z->field, sizeof z->field);
+    PL_FL_SNAPSHOT_SIZES(PL_FL_PUT)
+    PL_FL_SNAPSHOT_SCALARS(PL_FL_PUT)
+    PL_FL_PUT(geometry_file)
+    PL_FL_PUT(pressures_file)
+#undef PL_FL_PUT
+#define PL_FL_PUT_ARRAY(field, count)                                                  \
+    if (st == PL_OK) {                                                                 \
+        const size_t n_ = (size_t)(count);                                             \
+        st = n_ > 0 && !z->field ? PL_ERR_STATE                                        \
+                                 : pl__image_put_array(img, z->field, sizeof *z->field, n_); \
+    }
+    PL_FL_SNAPSHOT_ARRAYS(PL_FL_PUT_ARRAY)
+#undef PL_FL_PUT_ARRAY
+    pl__fluid_snapshot_free(&z);
+    return st;
+}
+
+/* Reads a section written by pl__fluid_save into a snapshot, then restores it as a rewind
+   does (pl__fluid_restore: remeshes and rebuilds the system for a fresh model). */
+pl_status pl__fluid_load(pl_world *w, struct pl_fluid *f, pl_image *img) {
+    uint64_t layout = 0;
+    if (pl__image_get(img, &layout, sizeof layout) != PL_OK)
+        return pl__world_error(w, PL_ERR_IO, "load state: the darcy section is empty");
+    if (layout != darcy_layout())
+        return pl__world_error(w, PL_ERR_STATE,
+                               "load state: the darcy model's state was written by a build with another layout "
+                               "(resume it with the build that wrote it)");
+    pl_fl_snapshot *z = calloc(1, sizeof *z);
+    if (!z) return pl__world_error(w, PL_ERR_NOMEM, "load state: out of memory");
+    pl_status st = PL_OK;
+#define PL_FL_GET(field) \
+    if (st == PL_OK) st = pl__image_get(img, &z->field, sizeof z->field);
+    PL_FL_SNAPSHOT_SIZES(PL_FL_GET)
+    PL_FL_SNAPSHOT_SCALARS(PL_FL_GET)
+    PL_FL_GET(geometry_file)
+    PL_FL_GET(pressures_file)
+#undef PL_FL_GET
+    if (st != PL_OK) {
+        free(z);
+        return pl__world_error(w, PL_ERR_IO, "load state: the darcy section ends inside its scalars");
+    }
+    z->geometry_file[sizeof z->geometry_file - 1] = '\0';
+    z->pressures_file[sizeof z->pressures_file - 1] = '\0';
+    const int lim = INT32_MAX / 4;
+    if (z->nq < 0 || z->nl < 0 || z->nn < 0 || z->ne < 0 || z->nnz < 0 || z->ncover < 0 || z->cover_bodies < 0 ||
+        z->ref_n < 0 || z->fcache_n < 0 || z->nq > lim || z->nl > lim || z->nn > lim || z->ne > lim || z->nnz > lim ||
+        z->ncover > lim || z->cover_bodies > lim || z->ref_n > lim || z->fcache_n > lim) {
+        free(z);
+        return pl__world_error(w, PL_ERR_IO, "load state: damaged darcy section (negative or huge sizes)");
+    }
+#define PL_FL_GET_ARRAY(field, count)                                                             \
+    if (st == PL_OK) {                                                                            \
+        const size_t n_ = (size_t)(count), e_ = sizeof *z->field;                                 \
+        if (n_ > 0) {                                                                             \
+            if (n_ > (SIZE_MAX - 16) / e_ || 16 + n_ * e_ > pl__image_left(img)) st = PL_ERR_IO;                               \
+            else if (!(z->field = malloc(n_ * e_))) st = PL_ERR_NOMEM;                            \
+        }                                                                                         \
+        if (st == PL_OK) st = pl__image_get_array(img, z->field, e_, n_);                         \
+        if (st != PL_OK)                                                                          \
+            pl__world_error(w, st, st == PL_ERR_NOMEM ? "load state: out of memory for the darcy array '%s'" \
+                                                      : "load state: the darcy array '%s' does not fit (damaged)", \
+                            #field);                                                              \
+    }
+    PL_FL_SNAPSHOT_ARRAYS(PL_FL_GET_ARRAY)
+#undef PL_FL_GET_ARRAY
+    if (st == PL_OK) st = pl__fluid_restore(w, f, z);
+    pl__fluid_snapshot_free(&z);
+    return st;
 }

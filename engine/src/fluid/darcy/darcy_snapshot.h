@@ -21,4 +21,8 @@ void pl__fluid_snapshot_free(pl_fl_snapshot **z);
 /* Folds the fluid state (heads, permeabilities, solid areas, consolidation reference and
    source, reused forces, update phase) into a state hash. */
 uint64_t pl__fluid_hash(const struct pl_fluid *f, uint64_t h);
+/* State image (restart files): the snapshot's fields, one by one, after a layout word; load
+   reads them back into a snapshot and restores it (the rewind path). */
+pl_status pl__fluid_save(const struct pl_fluid *f, pl_image *img);
+pl_status pl__fluid_load(pl_world *w, struct pl_fluid *f, pl_image *img);
 #endif

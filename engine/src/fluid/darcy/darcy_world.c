@@ -273,6 +273,7 @@ int pl_world_add_fluid_quad(pl_world *w, const pl_fluid_quad_def *def) {
     struct pl_fluid *f = model(w);
     if (!f) return pl__world_error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
     pl_mesh_quad q;
+    memset(&q, 0, sizeof q); /* padding too (restart files) */
     for (int k = 0; k < 4; k++) q.c[k] = def->corners[k];
     q.ndivx = def->ndivx;
     q.ndivy = def->ndivy;
@@ -339,7 +340,12 @@ static int add_line(pl_world *w, pl_vec2 a, pl_vec2 b, double value, int kind, c
         f->lines = p;
         f->lcap = nc;
     }
-    f->lines[f->nl] = (pl_fl_line){a, b, value, kind};
+    pl_fl_line *l = &f->lines[f->nl];
+    memset(l, 0, sizeof *l); /* padding too: restart files of the same state are the same bytes */
+    l->a = a;
+    l->b = b;
+    l->value = value;
+    l->kind = kind;
     f->bc_dirty = 1;
     return f->nl++;
 }
