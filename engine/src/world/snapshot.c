@@ -190,6 +190,7 @@ static pl_status restore_grains(pl_world *w, const pl_snapshot *s) {
     w->cell_items_cap = live.cell_items_cap;
     w->body_cell_cap = live.body_cell_cap;
     w->cursor_cap = live.cursor_cap;
+    w->writer = live.writer;
     w->models = live.models;
     w->model_n = live.model_n;
     w->model_cap = live.model_cap;
@@ -266,7 +267,9 @@ pl_status pl__grains_save(const pl_world *w, pl_image *img) {
     c.cap = c.material_cap = c.verts_cap = c.pair_cap = c.pair_scratch_cap = c.class_cap = 0;
     c.cand_cap = c.cell_cap = c.cell_items_cap = c.body_cell_cap = c.cursor_cap = 0;
     c.model_n = c.model_cap = c.ext_cap = 0;
-    memset(c.error, 0, sizeof c.error);
+    c.error = NULL;
+    c.writer = (pl_file_writer){NULL, NULL};
+    c.flag_values = NULL;
     int32_t kind = 0;
     for (int k = 0; k < NLIMIT; k++)
         if (w->dt_report.limit_kind && strcmp(w->dt_report.limit_kind, LIMIT_KINDS[k]) == 0) kind = k;
@@ -319,7 +322,8 @@ pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
         return pl__error(w, PL_ERR_IO, "load state: the grains section ends inside the world's scalars");
     }
     pl_world *o = &s->w;
-    memset(o->error, 0, sizeof o->error);
+    o->error = NULL;
+    o->writer = (pl_file_writer){NULL, NULL};
     o->dt_report.limit_kind = LIMIT_KINDS[kind >= 0 && kind < NLIMIT ? kind : 0];
     o->models = NULL;
     if (o->n != w->n || o->verts_n != w->verts_n || o->material_count != w->material_count) {

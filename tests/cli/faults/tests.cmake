@@ -68,8 +68,8 @@ pl_cli_test(faults_chart_no_series RC 1
 
 # porelab info fails like run: on an error in the run table, and it checks render.
 pl_cli_test(faults_info_bad_run RC 1 ARGS info ${PL_FAULTS}/bad_run_table.lua
-  MATCH "bad_run_table.lua: run: unknown field 'stepz'")
+  MATCH "bad_run_table.lua(:[0-9]+)?: run: unknown field 'stepz'")
 pl_cli_test(faults_info_bad_render RC 1 ARGS info ${PL_BAD}/bad_render.lua
-  MATCH "bad_render.lua: render: layers: unknown layer 'force'")
+  MATCH "bad_render.lua(:[0-9]+)?: render: layers: unknown layer 'force'")
 pl_cli_test(faults_info_bad_overlay RC 1 ARGS info ${PL_BAD}/bad_overlay.lua
-  MATCH "bad_overlay.lua: render: overlay\\[2\\]: radius must be > 0")
+  MATCH "bad_overlay.lua(:[0-9]+)?: render: overlay\\[2\\]: radius must be > 0")
