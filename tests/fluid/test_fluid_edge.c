@@ -24,7 +24,8 @@
  * Before the fix (outline integral cut at the mesh boundary), the floor disc felt
  * 0.33 / 0.79 / 0.93 rho_f g A at k_n = 1e5 / 1e6 / 1e7 (the printed "old" column is the force
  * with the mesh edge treated as dry, computed here from the overlap: rho_f g A minus the
- * boundary pressure times the chord). */
+ * boundary pressure times the chord), and the floor carried 2.14 / 1.28 / 1.08 times the disc's
+ * submerged weight (checked here to 1e-3: k_n x overlap = (rho_s - rho_f) g A). */
 #include "harness.h"
 #include "porelab/fluid.h"
 #include "porelab/world.h"
@@ -170,9 +171,9 @@ static int check(setup *s, int shape, const char *what, double kn, double dx, do
         return 1;
     }
     fprintf(stderr,
-            "  %-28s kn %.0e: overlap floor %.3e wall %.3e m; F/(rho g A) = (%+.2e, %.9f) %s, (%+.2e, %.9f) "
+            "  %-28s kn %.0e: overlap floor %.3e wall %.3e m; F/(rho g A) - (0, 1) = (%+.1e, %+.1e) %s, (%+.1e, %+.1e) "
             "outline; moment %+.1e N m; old (edge dry) %.3f\n",
-            what, kn, dy > 0 ? dy : 0, dx > 0 ? dx : 0, F.x / ref, F.y / ref, shape == DISC ? "pieces" : "outline", F2.x / ref, F2.y / ref,
+            what, kn, dy > 0 ? dy : 0, dx > 0 ? dx : 0, F.x / ref, F.y / ref - 1, shape == DISC ? "pieces" : "outline", F2.x / ref, F2.y / ref - 1,
             shape == DISC ? 0.0 : M2, old);
     ENSURE(dx > 0 || dy > 0); /* it does reach beyond the mesh */
     ENSURE_NEAR(F.y / ref, 1, 1e-6);
@@ -200,6 +201,15 @@ static int case_floor(int shape, const char *what) {
         double dx, dy;
         if (settle(&s, shape, &dx, &dy)) return 1;
         bad |= check(&s, shape, what, kns[k], dx, dy, shape == DISC ? old_floor_disc(dy) : NAN);
+        if (shape == DISC) {
+            /* the floor carries the grain's submerged weight (linear contact: k_n x overlap) */
+            double ratio = kns[k] * dy / ((2650 - RHO) * G * s.area);
+            fprintf(stderr, "    floor load / submerged weight (rho_s - rho_f) g A = %.6f\n", ratio);
+            if (!(fabs(ratio - 1) <= 1e-3)) {
+                fprintf(stderr, "%s:%d: floor load off the submerged weight\n", __FILE__, __LINE__);
+                bad = 1;
+            }
+        }
         pl_world_destroy(&s.w);
     }
     return bad; /* all three stiffnesses are run (and printed) even when one fails */
