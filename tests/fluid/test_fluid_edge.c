@@ -16,7 +16,8 @@
  * Cases, each at k_n = 1e5, 1e6, 1e7 N/m: a disc (r = 2.5 mm, rho_s = 2650) and polygons (a
  * 5 mm square resting flat, a hexagon resting on a vertex) on the floor; a disc and a square of
  * the water's density pushed into the left wall at mid-depth by a horizontal load of 0.3 N; a
- * disc pushed into the bottom-left corner. Each is settled (damped) to rest, then fixed and
+ * disc pushed into the bottom-left corner; and a disc and a square on the floor in upward seepage
+ * (i = 0.5, head line on the floor, drag off, uniform conductivity): rho_f g A (1 + i). Each is settled (damped) to rest, then fixed and
  * stepped once (so that its pieces are cut where it is): the disc force then takes the Gauss form
  * on the pieces; moved by 1e-12 m, it takes the outline integral; both are checked to 1e-6 of
  * rho_f g A, as is the polygon's outline integral (the only form for polygons, printed twice) and its
@@ -40,6 +41,10 @@
 
 enum { DISC, SQUARE, HEXAGON };
 
+/* upward seepage: extra total head under the floor (0: still water); the drag is off then, so
+   that the force is the pressure's, rho_f g A (1 + i) with i = DH / H */
+static double DH = 0;
+
 typedef struct {
     pl_world *w;
     int body;
@@ -61,9 +66,15 @@ static setup make(int shape, double kn, double rho_s, pl_vec2 c, pl_vec2 load, d
     q.ndivy = 4;
     pl_world_add_fluid_quad(w, &q);
     pl_world_add_fluid_bc(w, (pl_vec2){0, H}, (pl_vec2){0.2, H}, 0.0);
-    const char *names[] = {"FLUIDS_ON", "FIRST_STEP_STATIC", "FLUID_PERM", "FLUID_DENSITY", "FLUID_SOLVE_TIMESTEPS"};
-    const double vals[] = {1, 1, 0, RHO, 1};
-    for (int k = 0; k < 5; k++)
+    if (DH != 0) pl_world_add_fluid_bc(w, (pl_vec2){0, mesh_bottom}, (pl_vec2){0.2, mesh_bottom}, H - mesh_bottom + DH);
+    /* with seepage: drag off, and the permeability "from porosity" with equal low and high
+       values (uniform, so the gradient is uniform, but the grains' pieces are still cut: without
+       drag, porosity permeability or consolidation no pieces are cut and the mesh edge stays
+       dry, docs/fluid.md §12) */
+    const char *names[] = {"FLUIDS_ON", "FIRST_STEP_STATIC", "FLUID_PERM", "FLUID_DENSITY", "FLUID_SOLVE_TIMESTEPS",
+                           "FLUID_DRAG", "FLUID_PERM_LOW", "FLUID_PERM_HIGH"};
+    const double vals[] = {1, 1, DH != 0 ? 1 : 0, RHO, 1, DH != 0 ? 0 : 1, 1e-3, 1e-3};
+    for (int k = 0; k < 8; k++)
         if (pl_world_set_flag(w, names[k], vals[k]) != PL_OK) fprintf(stderr, "%s\n", pl_world_last_error(w));
     pl_material_def md = pl_default_material_def();
     md.name = "grain";
@@ -154,7 +165,7 @@ static int settle(setup *s, int shape, double *dx, double *dy) {
 /* Fluid force (and moment) on the grain now, and after a 1e-12 m shift (outline integral for a
    disc, whose pieces are then stale). */
 static int check(setup *s, int shape, const char *what, double kn, double dx, double dy, double old) {
-    const double ref = RHO * G * s->area;
+    const double ref = RHO * G * s->area * (1 + DH / H);
     pl_vec2 F = {0, 0};
     double M = 0;
     if (pl_world_fluid_body_force(s->w, s->body, &F, &M) != PL_OK) {
@@ -171,7 +182,7 @@ static int check(setup *s, int shape, const char *what, double kn, double dx, do
         return 1;
     }
     fprintf(stderr,
-            "  %-28s kn %.0e: overlap floor %.3e wall %.3e m; F/(rho g A) - (0, 1) = (%+.1e, %+.1e) %s, (%+.1e, %+.1e) "
+            "  %-28s kn %.0e: overlap floor %.3e wall %.3e m; F/F_ref - (0, 1) = (%+.1e, %+.1e) %s, (%+.1e, %+.1e) "
             "outline; moment %+.1e N m; old (edge dry) %.3f\n",
             what, kn, dy > 0 ? dy : 0, dx > 0 ? dx : 0, F.x / ref, F.y / ref - 1, shape == DISC ? "pieces" : "outline", F2.x / ref, F2.y / ref - 1,
             shape == DISC ? 0.0 : M2, old);
@@ -200,8 +211,8 @@ static int case_floor(int shape, const char *what) {
         setup s = make(shape, kns[k], 2650, (pl_vec2){0.1, R}, (pl_vec2){0, 0}, 0); /* touching the floor */
         double dx, dy;
         if (settle(&s, shape, &dx, &dy)) return 1;
-        bad |= check(&s, shape, what, kns[k], dx, dy, shape == DISC ? old_floor_disc(dy) : NAN);
-        if (shape == DISC) {
+        bad |= check(&s, shape, what, kns[k], dx, dy, shape == DISC && DH == 0 ? old_floor_disc(dy) : NAN);
+        if (shape == DISC && DH == 0) {
             /* the floor carries the grain's submerged weight (linear contact: k_n x overlap) */
             double ratio = kns[k] * dy / ((2650 - RHO) * G * s.area);
             fprintf(stderr, "    floor load / submerged weight (rho_s - rho_f) g A = %.6f\n", ratio);
@@ -248,6 +259,16 @@ static int test_mesh_below_floor(void) {
     return bad;
 }
 
+/* Upward seepage through the mesh (head line on the floor: i = 0.5, uniform gradient): the
+   field beyond the floor is the boundary element's, extended; the pressure force is
+   -A grad p = rho_f g A (1 + i) for the whole area. */
+static int test_seepage_on_floor(void) {
+    DH = 0.5 * H;
+    int bad = case_floor(DISC, "disc on the floor, i = 0.5") | case_floor(SQUARE, "square on the floor, i = 0.5");
+    DH = 0;
+    return bad;
+}
+
 int main(void) {
     RUN(test_disc_on_floor);
     RUN(test_square_on_floor);
@@ -257,5 +278,6 @@ int main(void) {
     RUN(test_disc_into_corner);
     RUN(test_square_into_corner);
     RUN(test_mesh_below_floor);
+    RUN(test_seepage_on_floor);
     return pl_test_report();
 }
