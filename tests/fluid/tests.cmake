@@ -5,6 +5,8 @@ pl_add_c_test(test_fluid_static SOURCES ${PL_TEST_DIR}/fluid/test_fluid_static.c
 pl_add_c_test(test_fluid_wave SOURCES ${PL_TEST_DIR}/fluid/test_fluid_wave.c LABEL fluid TIMEOUT 60)
 target_include_directories(test_fluid_wave PRIVATE ${CHOLMOD_INCLUDE})
 pl_add_c_test(test_fluid_buoyancy SOURCES ${PL_TEST_DIR}/fluid/test_fluid_buoyancy.c LABEL fluid TIMEOUT 60)
+# Grains pressed into a floor / side wall / corner on the mesh's edge keep rho_f g A (issue 13 item 6)
+pl_add_c_test(test_fluid_edge SOURCES ${PL_TEST_DIR}/fluid/test_fluid_edge.c LABEL fluid TIMEOUT 120)
 pl_add_c_test(test_fluid_bed SOURCES ${PL_TEST_DIR}/fluid/test_fluid_bed.c LABEL fluid TIMEOUT 120)
 pl_add_c_test(test_fluid_porosity SOURCES ${PL_TEST_DIR}/fluid/test_fluid_porosity.c LABEL fluid TIMEOUT 60)
 target_include_directories(test_fluid_porosity PRIVATE ${CHOLMOD_INCLUDE})

@@ -59,6 +59,15 @@ static int test_quicksand_onset(void) {
     double n = 1 - b.solid_area / (BW * top);
     double i_c = (1 - n) * (2.65 - 1);
     double Wb = (2650 - 1000) * 9.81 * b.solid_area;
+    {
+        /* at rest, the floor carries the bed's submerged weight (issue 13 item 6: with the
+           floor on the mesh's edge the bottom grains lost part of their buoyancy and the floor
+           carried 1.2-1.3 W'; docs/fluid.md §6.1) */
+        pl_body_info fl;
+        pl_world_body_info(w, b.floor_body, &fl);
+        fprintf(stderr, "  at rest (still water): floor reaction %.4f W' (W' = (rho_s - rho_f) g A_s = %.3f N/m)\n",
+                fabs(fl.force.y) / Wb, Wb);
+    }
     double prev_i = 0, prev_r = 1, il = -1, pex_ratio = 0;
     for (double f = 0.5; f <= 1.4; f += 0.02) {
         heads(w, f * i_c * top);

@@ -211,13 +211,19 @@ pl_status pl_fl_consolidation_source(struct pl_fluid *f, const pl_fl_bodies *b, 
         if (b->shape[i] == PL_SHAPE_POLYGON && angle) dth = angle[i] - f->ref_ang[i];
         const pl_vec2 *pv = b->shape[i] == PL_SHAPE_POLYGON ? &b->verts[b->vert_offset[i]] : NULL;
         const int pn = pv ? b->vert_count[i] : 0;
+        /* a grain pressed into a wall at the mesh's edge (pieces flagged outside: its part beyond
+           the boundary folded into the boundary element, docs/fluid.md §6.1) does not cross the
+           boundary as a solid: no boundary term, its whole area moves with it inside the mesh,
+           as the forces assume (the same pieces: the coupling stays work-consistent) */
+        int folded = 0;
+        for (int k = k0; k < k1; k++) folded |= f->cover[k].outside;
         for (int k = k0; k < k1; k++) {
             const pl_fl_cover *cv = &f->cover[k];
             int e = cv->elem;
             double a = cv->area;
             if (!(a > 0)) continue;
             const int32_t *v = &m->tri[3 * e];
-            for (int q = 0; q < 3; q++) {
+            for (int q = 0; q < 3 && !folded; q++) {
                 int be = f->elem_bedge[3 * e + q];
                 if (be < 0) continue;
                 pl_vec2 p0 = m->xy[m->bedge[2 * be]], p1 = m->xy[m->bedge[2 * be + 1]];
@@ -226,7 +232,9 @@ pl_status pl_fl_consolidation_source(struct pl_fluid *f, const pl_fl_bodies *b, 
             if (d.x == 0 && d.y == 0 && dth == 0) continue;
             pl_vec2 dd = d;
             if (dth != 0) {
-                /* displacement of the piece's centroid by the rotation about the body centroid */
+                /* displacement of the piece's centroid by the rotation about the body centroid
+                   (a piece beyond the boundary: the centroid of the body's piece in that element,
+                   within the element's size of the sliver) */
                 pl_vec2 t[3] = {m->xy[v[0]], m->xy[v[1]], m->xy[v[2]]};
                 pl_vec2 c = b->pos[i];
                 clip_centroid(t, pv, pn, &c);

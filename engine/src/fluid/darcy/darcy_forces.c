@@ -8,12 +8,55 @@
  * Fig. 3-11, including sign changes inside an element). Interphase drag of the porous skeleton
  * (DESIGN §3): each grain receives e (its solid area in the element) (-grad p_excess) per
  * element it covers, e the element's areal void ratio, so that the whole seepage force acts on
- * the skeleton. */
+ * the skeleton.
+ * Mesh edge (docs/fluid.md §6.1): the part of a grain pressed into a wall at the mesh's edge
+ * that lies beyond the boundary (a contact overlap) is not dry: the porosity update folds it
+ * into the boundary element as pieces flagged outside, and the outline integral uses, beyond
+ * the boundary, the linear field of the nearest such element, so that in still water the grain
+ * feels rho_f g A for its whole area A however far the contact presses it in. */
 #include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdlib.h>
 
 #define BP_CAP 256
+#define EXT_MAX 8
+#define ARC_CAP 512
+
+/* Elements whose field is extended beyond the mesh boundary for body i: those of its pieces
+   flagged outside (none for a body inside the mesh or one crossing the boundary as a solid). */
+static int ext_elems(const struct pl_fluid *f, int i, int *ext) {
+    if (f->par.porosity_method != 0 || !f->body_cover_start || i >= f->cover_bodies) return 0;
+    int n = 0;
+    for (int k = f->body_cover_start[i]; k < f->body_cover_start[i + 1]; k++)
+        if (f->cover[k].outside && n < EXT_MAX) ext[n++] = f->cover[k].elem;
+    return n;
+}
+
+/* Squared distance from x to triangle e's edges (x outside the mesh). */
+static double tri_dist2(const pl_mesh *m, int e, pl_vec2 x) {
+    const int32_t *v = &m->tri[3 * e];
+    double best = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        pl_vec2 P = m->xy[v[k]], Q = m->xy[v[(k + 1) % 3]];
+        double dx = Q.x - P.x, dy = Q.y - P.y, L2 = dx * dx + dy * dy;
+        double t = L2 > 0 ? ((x.x - P.x) * dx + (x.y - P.y) * dy) / L2 : 0;
+        t = t < 0 ? 0 : (t > 1 ? 1 : t);
+        double ex = P.x + t * dx - x.x, ey = P.y + t * dy - x.y;
+        best = fmin(best, ex * ex + ey * ey);
+    }
+    return best;
+}
+
+/* The element of ext nearest to x: its linear field is the pressure at x beyond the boundary. */
+static int nearest_ext(const pl_mesh *m, const int *ext, int n, pl_vec2 x) {
+    int best = ext[0];
+    double d = n > 1 ? tri_dist2(m, ext[0], x) : 0;
+    for (int k = 1; k < n; k++) {
+        double dk = tri_dist2(m, ext[k], x);
+        if (dk < d) { d = dk; best = ext[k]; }
+    }
+    return best;
+}
 
 static int cmp_d(const void *a, const void *b) {
     double x = *(const double *)a, y = *(const double *)b;
@@ -67,13 +110,18 @@ static void piece(pl_vec2 a, pl_vec2 d, pl_vec2 c, double u0, double u1, double 
 }
 
 static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c, double u0, double u1, pl_vec2 *F,
-                       double *M, int depth) {
+                       double *M, int depth, const int *ext, int next) {
     const pl_mesh *m = &f->mesh;
     pl_vec2 d = {b.x - a.x, b.y - a.y};
     pl_vec2 pa = {a.x + u0 * d.x, a.y + u0 * d.y}, pb = {a.x + u1 * d.x, a.y + u1 * d.y};
     pl_vec2 lo = {fmin(pa.x, pb.x), fmin(pa.y, pb.y)}, hi = {fmax(pa.x, pb.x), fmax(pa.y, pb.y)};
-    int i0, j0, i1, j1;
-    if (!pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
+    int i0 = 0, j0 = 0, i1 = -1, j1 = -1;
+    /* a piece wholly beyond the grid: nothing to cut it at (with an extension it is still wet) */
+    if (!pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) {
+        if (!next) return;
+        i0 = j0 = 0;
+        i1 = j1 = -1;
+    }
     double bp[BP_CAP];
     int nb = 0, overflow = 0;
     bp[nb++] = u0;
@@ -92,8 +140,8 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
         }
     if (overflow && depth < 40) {
         double um = 0.5 * (u0 + u1);
-        edge_force(f, a, b, c, u0, um, F, M, depth + 1);
-        edge_force(f, a, b, c, um, u1, F, M, depth + 1);
+        edge_force(f, a, b, c, u0, um, F, M, depth + 1, ext, next);
+        edge_force(f, a, b, c, um, u1, F, M, depth + 1, ext, next);
         return;
     }
     qsort(bp, (size_t)nb, sizeof(double), cmp_d);
@@ -103,8 +151,12 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
         double s0 = bp[k], s1 = bp[k + 1];
         if (s1 - s0 <= tiny) continue;
         double sm = 0.5 * (s0 + s1);
-        int e = pl_mesh_locate(m, (pl_vec2){a.x + sm * d.x, a.y + sm * d.y});
-        if (e < 0) continue; /* outside the fluid: p = 0 */
+        pl_vec2 xm = {a.x + sm * d.x, a.y + sm * d.y};
+        int e = pl_mesh_locate(m, xm);
+        if (e < 0) {
+            if (!next) continue;          /* outside the fluid: p = 0 */
+            e = nearest_ext(m, ext, next, xm); /* pressed into a wall at the edge: field extended */
+        }
         double p0 = p_in(f, e, (pl_vec2){a.x + s0 * d.x, a.y + s0 * d.y});
         double p1 = p_in(f, e, (pl_vec2){a.x + s1 * d.x, a.y + s1 * d.y});
         if (p0 <= 0 && p1 <= 0) continue; /* dry */
@@ -118,14 +170,19 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
     }
 }
 
-void pl_fl_polygon_force(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c, pl_vec2 *force,
-                         double *moment) {
+static void polygon_force_ext(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c, const int *ext, int next,
+                              pl_vec2 *force, double *moment) {
     pl_vec2 F = {0, 0};
     double M = 0;
-    for (int k = 0; k < n; k++) edge_force(f, v[k], v[(k + 1) % n], c, 0, 1, &F, &M, 0);
+    for (int k = 0; k < n; k++) edge_force(f, v[k], v[(k + 1) % n], c, 0, 1, &F, &M, 0, ext, next);
     force->x += F.x;
     force->y += F.y;
     *moment += M;
+}
+
+void pl_fl_polygon_force(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c, pl_vec2 *force,
+                         double *moment) {
+    polygon_force_ext(f, v, n, c, NULL, 0, force, moment);
 }
 
 /* Pressure on the circle in element e: p(theta) = al + be cos(theta) + ga sin(theta). */
@@ -228,7 +285,9 @@ static int circle_in_triangle(const pl_mesh *m, int e, pl_vec2 c, double r, doub
     return n;
 }
 
-void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *force) {
+static int cmp_arc(const void *a, const void *b) { return cmp_d(a, b); }
+
+static void disc_force_ext(const struct pl_fluid *f, pl_vec2 c, double r, const int *ext, int next, pl_vec2 *force) {
     const pl_mesh *m = &f->mesh;
     pl_vec2 lo = {c.x - r, c.y - r}, hi = {c.x + r, c.y + r};
     int i0, j0, i1, j1;
@@ -255,6 +314,8 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
         }
     }
     const int single = i0 == i1 && j0 == j1; /* no triangle can be met twice */
+    double seen[ARC_CAP][2]; /* arcs inside the mesh (with an extension: the rest is beyond it) */
+    int nseen = 0;
     for (int j = j0; j <= j1; j++)
         for (int i = i0; i <= i1; i++) {
             size_t cell = (size_t)j * m->gx + i;
@@ -273,11 +334,37 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
                 if (na == 0) continue;
                 double al, be, ga;
                 circle_coeffs(f, e, c, r, &al, &be, &ga);
-                for (int q = 0; q < na; q++) arc_force(r, al, be, ga, arcs[q][0], arcs[q][1], &Fx, &Fy);
+                for (int q = 0; q < na; q++) {
+                    arc_force(r, al, be, ga, arcs[q][0], arcs[q][1], &Fx, &Fy);
+                    if (next && nseen < ARC_CAP) { seen[nseen][0] = arcs[q][0]; seen[nseen][1] = arcs[q][1]; }
+                    nseen++;
+                }
             }
         }
+    if (next && nseen <= ARC_CAP) {
+        /* the arcs beyond the mesh boundary: gaps between the arcs inside (round-off gaps
+           between neighbouring triangles, below 1e-9 rad, are left out), each integrated with the
+           field of the nearest extended element */
+        qsort(seen, (size_t)nseen, sizeof seen[0], cmp_arc);
+        double cur = 0;
+        for (int q = 0; q <= nseen; q++) {
+            double g0 = cur, g1 = q < nseen ? seen[q][0] : 2 * PL_FL_PI;
+            if (g1 - g0 > 1e-9) {
+                double gm = 0.5 * (g0 + g1);
+                int e = nearest_ext(m, ext, next, (pl_vec2){c.x + r * cos(gm), c.y + r * sin(gm)});
+                double al, be, ga;
+                circle_coeffs(f, e, c, r, &al, &be, &ga);
+                arc_force(r, al, be, ga, g0, g1, &Fx, &Fy);
+            }
+            if (q < nseen && seen[q][1] > cur) cur = seen[q][1];
+        }
+    }
     force->x += Fx;
     force->y += Fy;
+}
+
+void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *force) {
+    disc_force_ext(f, c, r, NULL, 0, force);
 }
 
 /* Pressure force on a disc from its cover pieces (Gauss): p is continuous and linear in each
@@ -291,7 +378,9 @@ void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *fo
    of the radius), pixellated areas, part of the
    disc outside the mesh, or p <= 0 possible on the outline (p_e(centre) - r |grad p_e| <= 0
    in some covered element, a sufficient test). Under FLUID_CONSOLIDATION (a saturated mesh)
-   negative pressures push too and a sliver of 1e-3 of the disc may lie outside the mesh. */
+   negative pressures push too (except on pieces beyond the boundary). A grain pressed into a
+   wall at the mesh's edge counts its part beyond the boundary among its pieces (flagged
+   outside, in the boundary element: docs/fluid.md §6.1). */
 static int disc_force_covers(const struct pl_fluid *f, const pl_fl_bodies *b, int i, pl_vec2 *force) {
     if (f->par.porosity_method != 0 || !f->body_cover_start || !f->cover_xyr || i >= f->cover_bodies) return 0;
     const pl_vec2 c = b->pos[i];
@@ -315,7 +404,9 @@ static int disc_force_covers(const struct pl_fluid *f, const pl_fl_bodies *b, in
         const pl_fl_cover *cv = &f->cover[k];
         const int e = cv->elem;
         double gx = rg * (f->grad[2 * e] - upx), gy = rg * (f->grad[2 * e + 1] - upy);
-        if (!saturated) {
+        /* a piece beyond the boundary: wet only where the extended field is positive (a grain
+           poking through a free surface at the mesh top is dry there, saturated or not) */
+        if (!saturated || cv->outside) {
             double pc = p_in(f, e, c);
             if (!(pc > 0) || pc * pc <= r * r * (gx * gx + gy * gy) * (1 + 1e-9)) return 0;
         }
@@ -324,10 +415,11 @@ static int disc_force_covers(const struct pl_fluid *f, const pl_fl_bodies *b, in
         Fy -= cv->area * gy;
     }
     const double ad = PL_FL_PI * r * r;
-    /* part of the disc outside the mesh (more than the sliver a grain pressed into a wall on
-       the mesh boundary dips out by: its overlap, which the outline integral would turn into a
-       spurious push of p times the chord) */
-    if (fabs(asum - ad) > (saturated ? 1e-3 : 1e-9) * ad) return 0;
+    /* part of the disc outside the mesh and not folded into it (a disc crossing the boundary as
+       a solid): the outline integral, with p = 0 beyond the boundary. A grain pressed into a wall
+       at the mesh's edge has its outside part among its pieces (flagged outside), so the sum is
+       its whole area. */
+    if (fabs(asum - ad) > 1e-9 * ad) return 0;
     force->x += Fx;
     force->y += Fy;
     return 1;
@@ -335,11 +427,17 @@ static int disc_force_covers(const struct pl_fluid *f, const pl_fl_bodies *b, in
 
 void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i, pl_vec2 *force, double *moment) {
     int sh = b->shape[i];
+    int ext[EXT_MAX];
     if (sh == PL_SHAPE_DISC) {
-        if (!disc_force_covers(f, b, i, force)) pl_fl_disc_force(f, b->pos[i], b->radius[i], force);
+        if (!disc_force_covers(f, b, i, force)) {
+            int next = ext_elems(f, i, ext);
+            disc_force_ext(f, b->pos[i], b->radius[i], ext, next, force);
+        }
     }
-    else if (sh == PL_SHAPE_POLYGON)
-        pl_fl_polygon_force(f, &b->verts[b->vert_offset[i]], b->vert_count[i], b->pos[i], force, moment);
+    else if (sh == PL_SHAPE_POLYGON) {
+        int next = ext_elems(f, i, ext);
+        polygon_force_ext(f, &b->verts[b->vert_offset[i]], b->vert_count[i], b->pos[i], ext, next, force, moment);
+    }
     else return;
     if (f->par.drag && f->body_cover_start && i < f->cover_bodies) { /* bodies added since: none yet */
         const double rg = f->par.density * f->par.g;

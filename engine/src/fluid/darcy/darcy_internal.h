@@ -91,11 +91,22 @@ typedef struct pl_fl_params {
     int porosity_every;     /* grain steps between porosity updates; 0: every fluid update */
 } pl_fl_params;
 
-/* Candidate (body, element) pair with the solid area of the body inside the element. */
+/* Candidate (body, element) pair with the solid area of the body inside the element. A piece
+   with outside = 1 is instead the part of a body pressed into a wall at the mesh's edge that lies
+   beyond the mesh boundary, folded into the boundary element it crosses (darcy_porosity.c,
+   docs/fluid.md §6.1): the fluid treats it as if the mesh went on, so that the grain's buoyancy,
+   drag and skeleton flux are those of its whole area. */
 typedef struct pl_fl_cover {
     int32_t body, elem;
     double area;
+    int32_t outside;
 } pl_fl_cover;
+
+/* A body whose part beyond the mesh boundary reaches no deeper than this fraction of its
+   thickness across that boundary is a grain pressed into a wall at the mesh's edge (a contact
+   overlap: its outside part is folded into the mesh); a body reaching deeper crosses the
+   boundary as a solid (piston, lid, wall slab: the mesh boundary is its seal, p = 0 beyond). */
+#define PL_FL_EDGE_SLIVER 0.1
 
 /* Geometry of the bodies as the fluid sees them (copied or pointed from the world). */
 typedef struct pl_fl_bodies {

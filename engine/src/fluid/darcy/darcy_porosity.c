@@ -112,7 +112,7 @@ static int point_in_body(const pl_fl_bodies *b, int i, pl_vec2 p) {
     return 1;
 }
 
-static int push_cover(struct pl_fluid *f, int body, int elem, double area) {
+static int push_cover(struct pl_fluid *f, int body, int elem, double area, int outside) {
     if (f->ncover == f->cover_cap) {
         int nc = f->cover_cap ? 2 * f->cover_cap : 4096;
         pl_fl_cover *p = realloc(f->cover, sizeof(pl_fl_cover) * (size_t)nc);
@@ -120,7 +120,7 @@ static int push_cover(struct pl_fluid *f, int body, int elem, double area) {
         f->cover = p;
         f->cover_cap = nc;
     }
-    f->cover[f->ncover++] = (pl_fl_cover){body, elem, area};
+    f->cover[f->ncover++] = (pl_fl_cover){body, elem, area, outside};
     return 1;
 }
 
@@ -158,6 +158,115 @@ static void pixel_element(struct pl_fluid *f, const pl_fl_bodies *b, int e, int 
     double scale = in_tri > 0 ? m->area[e] / (in_tri * pa) : 0;
     for (int k = c0; k < c1; k++) f->cover[pair_of[k]].area *= scale;
     f->solid[e] = solid * pa * scale;
+}
+
+
+/* Length of segment a-b inside the body (disc c, r or convex counter-clockwise polygon v, n), and
+   the fraction t0..t1 of a-b where it is. */
+static double chord_body(pl_vec2 a, pl_vec2 b, pl_vec2 c, double r, const pl_vec2 *v, int n) {
+    pl_vec2 d = {b.x - a.x, b.y - a.y};
+    double L2 = d.x * d.x + d.y * d.y, t0 = 0, t1 = 1;
+    if (!(L2 > 0)) return 0;
+    if (!v) {
+        pl_vec2 o = {a.x - c.x, a.y - c.y};
+        double B = o.x * d.x + o.y * d.y, C = o.x * o.x + o.y * o.y - r * r, disc = B * B - L2 * C;
+        if (disc <= 0) return 0;
+        double sq = sqrt(disc);
+        t0 = fmax(0, (-B - sq) / L2);
+        t1 = fmin(1, (-B + sq) / L2);
+    } else {
+        for (int k = 0; k < n && t0 < t1; k++) {
+            pl_vec2 p = v[k], q = v[(k + 1) % n];
+            pl_vec2 e = {q.x - p.x, q.y - p.y};
+            double sa = e.x * (a.y - p.y) - e.y * (a.x - p.x); /* >= 0 inside */
+            double sd = e.x * d.y - e.y * d.x;
+            if (sd == 0) {
+                if (sa < 0) return 0;
+            } else {
+                double t = -sa / sd;
+                if (sd > 0) { if (t > t0) t0 = t; }
+                else if (t < t1) t1 = t;
+            }
+        }
+    }
+    return t1 > t0 ? (t1 - t0) * sqrt(L2) : 0;
+}
+
+/* Edge q of element e lies on the mesh boundary: nothing of the mesh just beyond its midpoint. */
+static int boundary_edge(const pl_mesh *m, int e, int q) {
+    const int32_t *v = &m->tri[3 * e];
+    pl_vec2 P = m->xy[v[q]], Q = m->xy[v[(q + 1) % 3]];
+    /* outward normal of a counter-clockwise edge: (dy, -dx) */
+    const double eps = 1e-7;
+    pl_vec2 x = {0.5 * (P.x + Q.x) + eps * (Q.y - P.y), 0.5 * (P.y + Q.y) - eps * (Q.x - P.x)};
+    return pl_mesh_locate(m, x) < 0;
+}
+
+/* Grains pressed into a wall at the mesh's edge (docs/fluid.md §6.1). A contact overlap is the
+   soft-contact stand-in for a point contact: the grain does not really reach into the wall, the
+   water surrounds it up to the contact, and it displaces its whole area. When the part of body i
+   beyond the mesh boundary is such a sliver (on every boundary edge it crosses, its depth beyond
+   the edge is at most PL_FL_EDGE_SLIVER of its thickness across the edge), that part's area,
+   A_body - sum of its pieces, is added as pieces flagged outside to the boundary elements whose
+   boundary edges the body crosses, shared by the length of the body on each edge. Forces (Gauss
+   form and the outline integral, which extends the field of those elements beyond the boundary),
+   drag, solid area and the consolidation source then all see the whole grain, as they would if
+   the mesh went on past the wall. A body reaching deeper (piston, lid, wall slab) keeps p = 0
+   beyond the boundary. Returns 0 only when out of memory. */
+static int fold_outside(struct pl_fluid *f, const pl_fl_bodies *b, int i, const pl_vec2 *pv, int pn) {
+    const pl_mesh *m = &f->mesh;
+    const int k0 = f->body_cover_start[i], k1 = f->ncover;
+    if (k0 == k1) return 1; /* wholly outside the mesh (or no area): nothing to fold */
+    const pl_vec2 c = b->pos[i];
+    const double r = b->radius[i];
+    double A = 0;
+    if (!pv) A = PL_FL_PI * r * r;
+    else
+        for (int k = 0; k < pn; k++) A += 0.5 * (pv[k].x * pv[(k + 1) % pn].y - pv[(k + 1) % pn].x * pv[k].y);
+    double ain = 0;
+    for (int k = k0; k < k1; k++) ain += f->cover[k].area;
+    const double aout = A - ain;
+    if (!(aout > 1e-12 * A)) return 1;
+    double wsum = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = k0; k < k1; k++) {
+            const int e = f->cover[k].elem;
+            const int32_t *v = &m->tri[3 * e];
+            double w = 0;
+            for (int q = 0; q < 3; q++) {
+                pl_vec2 P = m->xy[v[q]], Q = m->xy[v[(q + 1) % 3]];
+                double ch = chord_body(P, Q, c, r, pv, pn);
+                if (!(ch > 0) || !boundary_edge(m, e, q)) continue;
+                if (pass == 0) {
+                    double L = hypot(Q.x - P.x, Q.y - P.y);
+                    pl_vec2 n = {(Q.y - P.y) / L, -(Q.x - P.x) / L}; /* outward */
+                    double out, th;
+                    if (!pv) {
+                        out = (c.x - P.x) * n.x + (c.y - P.y) * n.y + r;
+                        th = 2 * r;
+                    } else {
+                        double hi = -INFINITY, lo = INFINITY;
+                        for (int j = 0; j < pn; j++) {
+                            double s = (pv[j].x - P.x) * n.x + (pv[j].y - P.y) * n.y;
+                            hi = fmax(hi, s);
+                            lo = fmin(lo, s);
+                        }
+                        out = hi;
+                        th = hi - lo;
+                    }
+                    if (out > PL_FL_EDGE_SLIVER * th) return 1; /* crosses the boundary as a solid */
+                }
+                w += ch;
+            }
+            if (pass == 0) wsum += w;
+            else if (!(wsum > 0)) return 1;
+            else if (w > 0) {
+                double a = aout * w / wsum;
+                f->solid[e] += a;
+                if (!push_cover(f, i, e, a, 1)) return 0;
+            }
+        }
+    return 1;
 }
 
 pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
@@ -235,9 +344,10 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
                         if (!(a > 0)) continue;
                         f->solid[e] += a;
                     }
-                    if (!push_cover(f, i, e, a)) return PL_ERR_NOMEM;
+                    if (!push_cover(f, i, e, a, 0)) return PL_ERR_NOMEM;
                 }
             }
+        if (f->par.porosity_method == 0 && !fold_outside(f, b, i, pv, pn)) return PL_ERR_NOMEM;
     }
     f->body_cover_start[b->n] = f->ncover;
     f->cover_bodies = b->n;
