@@ -273,6 +273,13 @@ return {
                             .. "pressure %.4f (%+.1f%%); u/(B DP) at mid-depth %.3f (series %.3f), at 0.85 H %.3f "
                             .. "(series %.3f)", Tv, table.concat(each, " "), mU, Ut, 100 * err, mUp,
                             100 * (mUp - Ut) / Ut, mum, u_series(0.5, Tv), mut, u_series(0.85, Tv)))
+        -- a part of a row of docs/validation.md (tests/harness.h: pl_validation; the ctest label
+        -- validation-doc collects these lines)
+        print(string.format("VALIDATION|%s|consolidation of grain columns (%d pre-loaded "
+                            .. "column%s, increment, drained at the floor)|Terzaghi U(T_v) at T_v = 0.1, 0.2, 0.5, c_v "
+                            .. "from the measured M|%.0f %% / %.0f %% / %.0f %%|T_v = %.1f: %+.1f %%",
+                            NCOL == 1 and "soil.consolidation_grains_short" or "soil.consolidation_grains", NCOL, NCOL == 1 and "" or "s", 100 * TOL[0.1],
+                            100 * TOL[0.2], 100 * TOL[0.5], Tv, 100 * err))
       else
         worst = math.huge
         fail = fail or string.format("T_v = %.1f: beyond the run", Tv)

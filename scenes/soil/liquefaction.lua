@@ -334,6 +334,13 @@ return {
         local g = tanks[2].g[name]
         assert(g.peak == 0 and g.du == 0, string.format("dry tank: excess pore pressure %.3g Pa", g.du))
       end
+      -- the row of docs/validation.md (tests/harness.h: pl_validation; ctest label validation-doc)
+      print(string.format("VALIDATION|soil.liquefaction|liquefaction on a shaking table|issue: r_u > 0.9 loose "
+                          .. "saturated, < 0.5 dense, 0 dry (free field, period mean, σ'_v0 geostatic)|loose peak "
+                          .. "during shaking > 0.9, dense peak < 0.5, dry 0; pipe rises > 5 mm and 5 mm more than dry; "
+                          .. "building sinks 5 mm more than dry|loose peak %.2f, dense peak %.2f, dry %.2f; pipe %+.1f mm "
+                          .. "(dry %+.1f); building %.1f mm (dry %.1f)", loose.peak, dense.peak, tanks[2].g.free.peak,
+                          1000 * rise[1], 1000 * rise[2], 1000 * sink[1], 1000 * sink[2]))
     end
   end,
 }

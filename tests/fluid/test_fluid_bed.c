@@ -162,6 +162,8 @@ static int test_lift_at_critical_gradient(void) {
     fprintf(stderr, "  bed: porosity n = %.4f (areal, measured), G_s = %.3f, i_c = (1 - n)(G_s - 1) = %.4f; lift at %.4f "
                     "(%.1f%% off)\n",
             n, rho_s / 1000, i_c, il, 100 * (il - i_c) / i_c);
+    pl_validation("fluid.bed_lift", "bed under upward seepage", "lifts at i_c = (1 − n)(G_s − 1)", "10 %",
+                  "%+.1f %% (n measured %.3f)", 100 * (il - i_c) / i_c, n);
     ENSURE(il > 0);
     ENSURE_NEAR(il, i_c, 0.10 * i_c);
     pl_world_destroy(&w);
@@ -178,6 +180,8 @@ static int test_no_drag_no_lift(void) {
     }
     double i_c, n;
     double il = ramp(w, solid, rho_s, 1.1, &i_c, &n);
+    pl_validation("fluid.bed_no_drag", "same without the interphase drag", "does not lift at 1.1 i_c", "—", "%s",
+                  il == -1 ? "no lift" : "LIFTS");
     ENSURE(il == -1);
     pl_world_destroy(&w);
     return 0;

@@ -86,6 +86,8 @@ static int test_half_density_floats_half_submerged(void) {
     double draft = 0.5 - (bi.position.y - 0.05);
     fprintf(stderr, "  rho_p/rho_f = 1/2: centroid y = %.6f, draft %.6f m (analytic 0.05), angle %.2e rad\n",
             bi.position.y, draft, bi.angle);
+    pl_validation("fluid.buoyancy_half", "buoyancy (§4.2), ρ_p/ρ_f = ½ superquadric", "half submerged: draft 0.05 m",
+                  "2 %", "draft %.6f m", draft);
     ENSURE_NEAR(draft, 0.05, 0.02 * 0.05);
     pl_world_destroy(&w);
     return 0;
@@ -101,6 +103,7 @@ static int test_rotated_rights_itself(void) {
     double s = sin(bi.angle);
     fprintf(stderr, "  started at 30 degrees: final angle %.3f degrees (mod 180), centroid y = %.5f\n",
             fmod(bi.angle * 180 / PI, 180), bi.position.y);
+    pl_validation("fluid.buoyancy_half", "", "", "", "rights itself from 30° (to %.2f°)", fmod(bi.angle * 180 / PI, 180));
     ENSURE(fabs(s) < 0.02);
     ENSURE_NEAR(bi.position.y, 0.5, 0.02 * 0.05);
     pl_world_destroy(&w);
@@ -117,6 +120,8 @@ static int test_neutral_stays(void) {
     double d = hypot(bi.position.x - 0.43, bi.position.y - 0.23);
     fprintf(stderr, "  rho_p/rho_f = 1, immersed: displacement after 0.5 s %.3e m, angle change %.3e rad\n", d,
             bi.angle - 0.4);
+    pl_validation("fluid.buoyancy_neutral_dense", "ρ_p = ρ_f immersed; ρ_p = 2 ρ_f", "stays put; sinks to the floor",
+                  "1e-6 m; rests on the floor (y 0.045–0.051 m)", "moves %.1e m", d);
     ENSURE(d < 1e-6);
     ENSURE(fabs(bi.angle - 0.4) < 1e-6);
     pl_world_destroy(&w);
@@ -131,6 +136,7 @@ static int test_dense_sinks(void) {
     pl_body_info bi;
     pl_world_body_info(w, b, &bi);
     fprintf(stderr, "  rho_p/rho_f = 2: centroid y = %.5f m after 2 s (resting on the floor: 0.05)\n", bi.position.y);
+    pl_validation("fluid.buoyancy_neutral_dense", "", "", "", "heavy one at y = %.5f m (resting: 0.05)", bi.position.y);
     ENSURE(bi.position.y < 0.05 + 1e-3 && bi.position.y > 0.045);
     pl_world_destroy(&w);
     return 0;
@@ -155,6 +161,8 @@ static int test_disc_quarter_density(void) {
     double draft = 0.5 - (bi.position.y - r);
     fprintf(stderr, "  disc rho_p/rho_f = 1/4: theta = %.6f, draft %.6f m (analytic %.6f, error %.2f%%)\n", th, draft,
             draft_ref, 100 * fabs(draft - draft_ref) / draft_ref);
+    pl_validation("fluid.buoyancy_disc", "disc ρ_p/ρ_f = ¼", "θ − sin θ = 2π s", "2 %", "draft %.6f m vs %.6f (%.3f %%)",
+                  draft, draft_ref, 100 * fabs(draft - draft_ref) / draft_ref);
     ENSURE_NEAR(draft, draft_ref, 0.02 * draft_ref);
     pl_world_destroy(&w);
     return 0;

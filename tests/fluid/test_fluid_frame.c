@@ -80,6 +80,9 @@ static int vertical_shaking(void) {
                 ay, 0.8 * H, p, ref);
     }
     fprintf(stderr, "  vertical shaking: worst |p - rho (g + a_y) d| / (rho g d) = %.2e\n", worst);
+    pl_validation("fluid.frame", "water in a shaking table's frame (u–p)",
+                  "vertical: p = ρ_f (g + a_y) d; horizontal, deep: ∂p/∂x = −ρ_f a_x, disc force ρ_f a_x πr²",
+                  "1e-10; 1 %", "vertical %.0e", worst);
     ENSURE(worst < 1e-10);
     /* without the frame: hydrostatic in g */
     ENSURE(pl_world_fluid_set_frame(w, -1) == PL_OK);
@@ -156,6 +159,7 @@ static int horizontal_shaking(void) {
     }
     fprintf(stderr, "  horizontal shaking: worst relative error of dp/dx %.2e, of the disc's horizontal force %.2e\n",
             worst_g, worst_f);
+    pl_validation("fluid.frame", "", "", "", "horizontal %.0e, disc force %.0e", worst_g, worst_f);
     ENSURE(worst_g < 1e-2);
     ENSURE(worst_f < 1e-2);
     pl_world_destroy(&w);

@@ -150,6 +150,8 @@ static int test_dam_quads(void) {
     ENSURE(nn == 3 * 41 - 2);
     pl_world_prepare(w); /* queries read only: build first */
     fprintf(stderr, "  dam mesh: %d nodes, %d triangles\n", nn, pl_world_fluid_triangle_count(w));
+    pl_validation("fluid.mesh_conforming", "meshes of several quads: no hanging node", "conformity", "exact",
+                  "conforming (dam: %d nodes, %d triangles)", nn, pl_world_fluid_triangle_count(w));
     pl_world_destroy(&w);
     return 0;
 }

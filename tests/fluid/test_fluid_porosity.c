@@ -137,6 +137,8 @@ static int test_exact_vs_pixels(void) {
         grains += bi.area;
     }
     fprintf(stderr, "  exact: element solid areas sum to %.15g, grains %.15g\n", total, grains);
+    pl_validation("fluid.porosity", "porosity by exact clipping", "solid areas sum to the grains' area", "1e-10",
+                  "%.1e", fabs(total - grains) / grains);
     ENSURE_REL(total, grains, 1e-10);
     struct pl_fluid *f = pl__darcy(w);
     double mean_area = 0.96 / ne, prev = 1e300;

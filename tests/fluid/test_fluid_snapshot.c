@@ -246,6 +246,9 @@ static int check_plan(const char *name, const plan *p) {
                     "hashes %016llx %016llx %016llx %016llx\n",
             name, p->n, p->m, pl_snapshot_bytes(s), st1.updates, st1.factorizations, (unsigned long long)h1,
             (unsigned long long)h2, (unsigned long long)h3, (unsigned long long)h4);
+    pl_validation("fluid.snapshot", "queries never change the run; snapshots restore the fluid",
+                  "same state hash with and without queries, after restore", "exact", "%s: %s", name,
+                  h1 == h2 && h1 == h3 && h1 == h4 ? "identical" : "DIFFERENT");
     ENSURE(h1 != h0);
     ENSURE(h1 == h2);
     ENSURE(h1 == h3);
@@ -450,6 +453,8 @@ static int queries_leave_state_alone(void) {
         }
         fprintf(stderr, "  %-18s without queries %016llx, with %016llx\n", names[b], (unsigned long long)hash[0],
                 (unsigned long long)hash[1]);
+        pl_validation("fluid.snapshot", "", "", "", "queries in %s: %s", names[b],
+                      hash[0] == hash[1] ? "identical" : "DIFFERENT");
         ENSURE(hash[0] == hash[1]);
     }
     g_lag = 0;

@@ -89,6 +89,8 @@ static int test_dam_flow(void) {
         ENSURE(dam(refs[k], -9.81, &qi[k], &qo[k], &lo, &hi) == 0);
         fprintf(stderr, "  dam x%d: inflow %.12g outflow %.12g (relative difference %.2e), total head range [%.6g, %.6g] + 300\n",
                 refs[k], qi[k], qo[k], fabs(qi[k] - qo[k]) / qi[k], lo, hi);
+        pl_validation("fluid.dam_flow", "dam flow (§4.1): inflow = outflow", "mass conservation", "1e-8 relative",
+                      "%.1e (refinement %d)", fabs(qi[k] - qo[k]) / qi[k], refs[k]);
         ENSURE(qi[k] > 0);
         ENSURE_REL(qo[k], qi[k], 1e-8);
         ENSURE(lo >= -1e-9 && hi <= 40 + 1e-9);
@@ -142,6 +144,8 @@ static int test_hydrostatic(void) {
     double pr;
     pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_pressure_at(w, (pl_vec2){50, 50}, &pr, NULL) == 0);
+    pl_validation("fluid.hydrostatic", "still water", "hydrostatic, zero Darcy velocity", "1e-10",
+                  "head 300 at every node, v = 0 in every element, p = ρ g (300 − y) at 20 points");
     ENSURE(pr == 0);
     free(h);
     pl_world_destroy(&w);
@@ -204,6 +208,8 @@ static int test_archimedes(void) {
     pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_body_force(w, b, &F, &M) == PL_OK);
     fprintf(stderr, "  hexagon: F = (%.3e, %.15g), rho g A = %.15g, M = %.3e\n", F.x, F.y, rho * g * A, M);
+    pl_validation("fluid.archimedes", "Archimedes, bodies fully immersed", "ρ_f g A up, no moment", "1e-10",
+                  "hexagon %.0e", fabs(F.y - rho * g * A) / (rho * g * A));
     ENSURE_REL(F.y, rho * g * A, 1e-10);
     ENSURE_NEAR(F.x, 0, 1e-10 * rho * g * A);
     ENSURE_NEAR(M, 0, 1e-10 * rho * g * A * 40);
@@ -211,6 +217,7 @@ static int test_archimedes(void) {
     ENSURE(pl_world_fluid_body_force(w, d, &F, &M) == PL_OK);
     double Ad = 3.141592653589793 * 23.7 * 23.7;
     fprintf(stderr, "  disc: F = (%.3e, %.15g), rho g pi r^2 = %.15g\n", F.x, F.y, rho * g * Ad);
+    pl_validation("fluid.archimedes", "", "", "", "disc %.0e", fabs(F.y - rho * g * Ad) / (rho * g * Ad));
     ENSURE_REL(F.y, rho * g * Ad, 1e-10);
     ENSURE_NEAR(F.x, 0, 1e-10 * rho * g * Ad);
     pl_world_destroy(&w);
@@ -225,6 +232,7 @@ static int test_archimedes(void) {
     ENSURE(pl_world_fluid_body_force(w, d, &F, &M) == PL_OK);
     Ad = 3.141592653589793 * 61.3 * 61.3;
     fprintf(stderr, "  large disc on a 60 x 60 mesh: F_y = %.15g, rho g pi r^2 = %.15g\n", F.y, rho * g * Ad);
+    pl_validation("fluid.archimedes", "", "", "", "large disc on a 60 × 60 mesh %.0e", fabs(F.y - rho * g * Ad) / (rho * g * Ad));
     ENSURE_REL(F.y, rho * g * Ad, 1e-10);
     pl_world_prepare(w); /* queries read only: build first */
     ENSURE(pl_world_fluid_body_force(w, b, &F, &M) == PL_OK);
@@ -339,6 +347,9 @@ static int test_flux_and_anisotropy(void) {
         pl_world_fluid_pressure_at(w, (pl_vec2){1, 0}, NULL, &h0);
         fprintf(stderr, "  inflow 0.01 m/s x 2 m: outflow %.15g m^2/s; floor head %.12g (expected %.12g), D_y/D_x = %g\n", out,
                 h0, 0.01 * 1 / (0.5 * aniso), aniso);
+        pl_validation("fluid.flux_line", "flux line", "inflow leaves through the head line; floor head q L / D_y",
+                      "1e-10", "D_y/D_x = %g: outflow %.1e, floor head %.1e", aniso, fabs(out - 0.02) / 0.02,
+                      fabs(h0 - 0.01 / (0.5 * aniso)) / (0.01 / (0.5 * aniso)));
         ENSURE_REL(out, 0.02, 1e-10);
         ENSURE_REL(h0, 0.01 / (0.5 * aniso), 1e-10);
         pl_world_prepare(w); /* queries read only: build first */

@@ -82,6 +82,10 @@ static int erfc_convergence(double min_order) {
     }
     for (int ti = 0; ti < 3; ti++)
         for (int k = 1; k < 5; k++) ENSURE(err[ti][k] < err[ti][k - 1]);
+    pl_validation("fluid.wave", "pressure wave (§4.3), N = 4 … 64", "φ₀ erfc(x/2√(Dt)) at t = 0.001, 0.005, 0.01",
+                  "error falls with N; order > 1.3 (lumped), > 1.8 (consistent); < 1e-3 at N = 64",
+                  "%s storage: %.2g / %.2g / %.2g at N = 64, order %.1f", g_mass ? "consistent" : "lumped", err[0][4],
+                  err[1][4], err[2][4], log2(err[2][3] / err[2][4]));
     /* on the resolved meshes: observed order (P1, max norm at the nodes) */
     ENSURE(log2(err[2][3] / err[2][4]) > min_order);
     ENSURE(err[2][4] < 1e-3);
@@ -115,6 +119,8 @@ static int test_series_late(void) {
         if (fabs(t - times[ti]) < 0.5 * dt) {
             double e = max_error(w, t, 1);
             fprintf(stderr, "  t = %g: max error against the Fourier series %.3e (N = 64, Crank-Nicolson, dt = 1e-4)\n", t, e);
+            pl_validation("fluid.wave_late", "later times", "finite-rod Fourier series (N = 64, Crank–Nicolson)", "1e-3",
+                          "%.1e (t = %g)", e, t);
             ENSURE(e < 1e-3);
             ti++;
         }

@@ -12,6 +12,7 @@ static int sinusoid_follows_law(void) {
     const int table = add_wall(w, m, -1, 0, 1, 0);
     const int disc = add_disc(w, m, 0, 0.0099, 0.01);
     ENSURE(pl_world_set_sinusoid(w, table, (pl_vec2){0.002, 0.001}, 5, 0.1, 0.5) == PL_OK);
+    double worst = 0; /* for the validation row */
     for (int k = 1; k <= 6; k++) {
         if (pl_world_step(w, 1000) != PL_OK) {
             fprintf(stderr, "  %s\n", pl_world_last_error(w));
@@ -21,12 +22,15 @@ static int sinusoid_follows_law(void) {
         const double ph = t < 0.1 ? 0 : sin(2 * M_PI * 5 * (fmin(t, 0.5) - 0.1));
         const pl_body_info b = body(w, table);
         ENSURE_NEAR(b.position.x, 0.002 * ph, 1e-12);
+        worst = fmax(worst, fmax(fabs(b.position.x - 0.002 * ph), fabs(b.position.y - 0.001 * ph)));
         ENSURE_NEAR(b.position.y, 0.001 * ph, 1e-12);
     }
     /* the table did work on the disc riding on it */
     const pl_energy e = pl_world_energy(w);
     fprintf(stderr, "  table work on the disc %.4g J, balance %.3g J, disc at y = %.5f\n", e.external, e.balance,
             body(w, disc).position.y);
+    pl_validation("grains.shaking_table", "shaking table", "x₀ + A sin(2πf(t−t₀))", "1e-12 m",
+                  "largest deviation %.1e m at 6 checks", worst);
     ENSURE(fabs(e.external) > 0);
     ENSURE(fabs(e.balance) < 0.05 * (e.damped + e.friction + fabs(e.external)) + 1e-9);
     pl_world_destroy(&w);
@@ -89,6 +93,8 @@ static int servo_holds_force(void) {
         fmin = fmin > f ? f : fmin;
     }
     fprintf(stderr, "  servo: piston force %.2f .. %.2f N (target %.0f)\n", fmin, fmax, target);
+    pl_validation("grains.servo", "servo wall (seed 003 eqs. 5.11–5.12)", "holds target force", "1 %",
+                  "%.2f–%.2f N for %.0f N", fmin, fmax, target);
     ENSURE_NEAR(fmin, target, 0.01 * target);
     ENSURE_NEAR(fmax, target, 0.01 * target);
     pl_world_destroy(&w);
@@ -123,6 +129,8 @@ static int hinged_walls_follow_top(void) {
     ENSURE_NEAR(v[0].x, 0.2, 1e-9);
     ENSURE_NEAR((v[1].x - v[0].x) / (v[1].y - v[0].y), dx / H, 1e-9);
     fprintf(stderr, "  hinge: top displaced %.4f m, side walls at %.4f rad\n", dx, atan(dx / H));
+    pl_validation("grains.hinge", "hinged simple-shear walls", "line through pivot at atan(dx/H), constant length",
+                  "1e-9", "walls at %.4f rad after dx = %.4f m, within 1e-9", atan(dx / H), dx);
     pl_world_destroy(&w);
     return 0;
 }
@@ -141,6 +149,8 @@ static int settled_stepping_allocates_nothing(void) {
     ENSURE(pl_world_step(w, 5000) == PL_OK);
     const struct mallinfo2 b = mallinfo2();
     fprintf(stderr, "  heap in use before/after 5000 settled steps: %zu / %zu bytes\n", a.uordblks, b.uordblks);
+    pl_validation("grains.no_allocation", "no allocation once settled", "heap unchanged over 5000 steps", "exact",
+                  "%zu B before, %zu B after", a.uordblks, b.uordblks);
     ENSURE(a.uordblks == b.uordblks && a.hblkhd == b.hblkhd);
     pl_world_destroy(&w);
     return 0;

@@ -63,6 +63,9 @@ static int restitution_matches_damping_ratio(void) {
             const double ea = exp(-M_PI * zetas[z] / sqrt(1 - zetas[z] * zetas[z]));
             fprintf(stderr, "  %s zeta %.2f: e = %.5f, analytic %.5f (%.3f %%)\n", t ? "disc-disc" : "disc-wall",
                     zetas[z], e, ea, 100 * fabs(e - ea) / ea);
+            pl_validation("grains.restitution", "restitution, disc–wall and disc–disc, ζ = 0.05, 0.2",
+                          "e = exp(−πζ/√(1−ζ²))", "1 % (dt = 0.01 × critical)", "%s ζ = %.2f: %.3f %%",
+                          t ? "disc–disc" : "disc–wall", zetas[z], 100 * fabs(e - ea) / ea);
             ENSURE_REL(e, ea, 0.01);
         }
     return 0;
@@ -87,6 +90,8 @@ static int restitution_from_material(void) {
     pl_world_step(w, (int)(0.02 / pl_world_dt(w)));
     const double e = body(w, b).velocity.y / 0.5;
     fprintf(stderr, "  material restitution 0.5: measured %.5f\n", e);
+    pl_validation("grains.restitution_material", "restitution given as a material property (e = 0.5)", "0.5", "1 %",
+                  "%.4f", e);
     pl_world_destroy(&w);
     ENSURE_REL(e, 0.5, 0.01);
     return 0;
@@ -224,6 +229,8 @@ static int energy_error_second_order(void) {
     const double p1 = log2(e1 / e2), p2 = log2(e2 / e3);
     fprintf(stderr, "  bouncing disc: max |energy error| %.3e, %.3e, %.3e for dt 4e-5, 2e-5, 1e-5: order %.2f, %.2f\n",
             e1, e2, e3, p1, p2);
+    pl_validation("grains.energy_order", "undamped bouncing disc: energy error", "bounded, ∝ Δt²", "order 1.6–2.6",
+                  "max error %.1e / %.1e / %.1e at dt = 4e-5 / 2e-5 / 1e-5 s (orders %.2f, %.2f)", e1, e2, e3, p1, p2);
     ENSURE(e1 < 1e-3);
     /* second order, with some scatter from contact start/end falling between steps */
     ENSURE(p1 > 1.6 && p1 < 2.6);
@@ -275,6 +282,9 @@ static int incline_rolls_or_slips(void) {
     double th = 20 * M_PI / 180, mu = 0.3;
     double a = incline_acceleration(th, mu, &ratio);
     fprintf(stderr, "  rolling: a = %.5f, analytic %.5f; v / (omega r) = %.4f\n", a, 2.0 / 3 * g * sin(th), ratio);
+    pl_validation("grains.incline_rolling", "disc rolling on an incline (tan θ < 3μ)", "a = ⅔ g sin θ, v = ωr", "1 %",
+                  "a = %.4f vs %.4f (%.2f %%); v/ωr = %.4f", a, 2.0 / 3 * g * sin(th),
+                  100 * fabs(a - 2.0 / 3 * g * sin(th)) / (2.0 / 3 * g * sin(th)), ratio);
     ENSURE_REL(a, 2.0 / 3 * g * sin(th), 0.01);
     ENSURE_NEAR(ratio, 1, 0.01);
     /* slips: tan 30 deg = 0.577 > 3 x 0.1 */
@@ -282,6 +292,8 @@ static int incline_rolls_or_slips(void) {
     mu = 0.1;
     a = incline_acceleration(th, mu, &ratio);
     fprintf(stderr, "  slipping: a = %.5f, analytic %.5f; v / (omega r) = %.4f\n", a, g * (sin(th) - mu * cos(th)), ratio);
+    pl_validation("grains.incline_sliding", "disc sliding on an incline (tan θ > 3μ)", "a = g (sin θ − μ cos θ)", "1 %",
+                  "%.5f vs %.5f", a, g * (sin(th) - mu * cos(th)));
     ENSURE_REL(a, g * (sin(th) - mu * cos(th)), 0.01);
     ENSURE(ratio < 0.9);
     return 0;
@@ -302,6 +314,8 @@ static int rolling_resistance(void) {
     const double ref = 2.0 / 3 * g * (sin(th) - mur * cos(th));
     fprintf(stderr, "  mu_r = %.2f, tan theta = 1.5 mu_r: a = %.5f, analytic (2/3) g (sin - mu_r cos) = %.5f; "
                     "v / (omega r) = %.4f\n", mur, a, ref, ratio);
+    pl_validation("grains.rolling_resistance", "rolling resistance μ_r = 0.2 on inclines tan θ = 0.8 and 1.5 μ_r",
+                  "rests; a = ⅔ g (sin θ − μ_r cos θ)", "1e-3 m/s²; 1 %", "a = %.5f vs %.5f", a, ref);
     ENSURE_REL(a, ref, 0.01);
     ENSURE_NEAR(ratio, 1, 0.01);
     g_rolling = 0;
@@ -348,6 +362,8 @@ static int guard_stops_three_times_critical(void) {
     const pl_status st = pl_world_step(w, 20000);
     const char *msg = pl_world_last_error(w);
     fprintf(stderr, "  dt = 3 x critical (%.3g s): status %s\n  message: %s\n", d.dt, pl_status_name(st), msg);
+    pl_validation("grains.guard", "stability guard at 3 × critical step", "run stops, message names body, time, safe step",
+                  "—", "stops at step %.0f: %s", pl_world_time(w) / d.dt, pl_status_name(st));
     ENSURE(st == PL_ERR_UNSTABLE);
     ENSURE(strstr(msg, "body") != NULL);
     ENSURE(strstr(msg, "t = ") != NULL);

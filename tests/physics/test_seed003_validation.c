@@ -60,6 +60,8 @@ static int table_2_1_case1_oscillates(void) {
     double lo, hi;
     plate_force(0, 0, 5000, &lo, &hi);
     fprintf(stderr, "  case 1: plate force range %.1f .. %.1f N (W = %.1f)\n", lo, hi, W);
+    pl_validation("grains.plate_undamped", "disc on plate, no damping (seed 003 Table 2.1 case 1)",
+                  "force oscillates 0 … 2W", "1 % of W", "%.1f … %.1f N (2W = %.1f)", lo, hi, 2 * W);
     ENSURE_NEAR(lo, 0, 0.01 * W);
     ENSURE_NEAR(hi, 2 * W, 0.01 * W);
     return 0;
@@ -71,6 +73,10 @@ static int table_2_1_case2_global(void) {
     const double fa = analytic_plate_force(1e4, 5.0);
     fprintf(stderr, "  case 2: F(5 s) = %.2f N, analytic %.2f N, seed 72703.36 N; error vs W %.4f %% (seed 3.5742 %%)\n",
             f, fa, 100 * fabs(f - W) / W);
+    pl_validation("grains.plate_global_c", "disc on plate, global C = 1e4 (case 2)",
+                  "analytic damped oscillator at t = 5 s; seed 72 703.36 N (3.574 %)",
+                  "0.2 % of W vs analytic; ≤ 3.6 % vs W", "%.2f N (%.3f %%), analytic %.2f N", f,
+                  100 * fabs(f - W) / W, fa);
     ENSURE_NEAR(f, fa, 0.002 * W);
     ENSURE(fabs(f - W) / W <= 0.036); /* within the seed's own error */
     return 0;
@@ -80,6 +86,8 @@ static int table_2_1_case3_contact(void) {
     double lo, hi;
     const double f = plate_force(1e5, 0, 5000, &lo, &hi);
     fprintf(stderr, "  case 3: F(5 s) = %.3f N, error %.5f %% (seed 0.0006 %%)\n", f, 100 * fabs(f - W) / W);
+    pl_validation("grains.plate_contact_cn", "disc on plate, contact c_N = 1e5 (case 3)",
+                  "W = 75 398.2 N; seed error 0.0006 %", "0.01 %", "%.4f %%", 100 * fabs(f - W) / W);
     ENSURE_NEAR(f, W, 1e-4 * W);
     return 0;
 }
@@ -88,6 +96,8 @@ static int table_2_1_case4_both(void) {
     double lo, hi;
     const double f = plate_force(1e5, 4.5e5, 5000, &lo, &hi);
     fprintf(stderr, "  case 4: F(5 s) = %.3f N, error %.5f %% (seed 0.0010 %%)\n", f, 100 * fabs(f - W) / W);
+    pl_validation("grains.plate_critical", "disc on plate, c_N and C (case 4, critical)", "W; seed 0.0010 %",
+                  "0.01 %, no overshoot > 0.5 %", "%.4f %%, peak %.4f W", 100 * fabs(f - W) / W, hi / W);
     ENSURE_NEAR(f, W, 1e-4 * W);
     /* critically damped: no overshoot beyond the weight by more than 0.5 % */
     ENSURE(hi <= 1.005 * W);
@@ -145,6 +155,7 @@ static int table_2_2_five_discs(void) {
         {2, 3, 115750.6, 113997.9, "disc 3 - disc 4"},  {2, 4, 115760.0, 113997.9, "disc 3 - disc 5"},
         {3, -2, 87832.7, 85498.4, "disc 4 - wall 2"},   {4, -3, 87828.2, 85498.4, "disc 5 - wall 3"},
     };
+    double worst_seed = 0; /* for the validation row */
     int fail = 0;
     for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++) {
         const int on = f.disc[rows[k].on];
@@ -156,7 +167,11 @@ static int table_2_2_five_discs(void) {
         fprintf(stderr, "  %-16s %10.1f N  seed %10.1f (diff %.4f %%)  theory %10.1f  error %.3f %% (seed %.3f %%)\n",
                 rows[k].name, F, rows[k].seed, dseed, rows[k].theory, err, seed_err);
         if (!(dseed <= 0.01) || !(err <= seed_err + 0.01)) fail = 1;
+        worst_seed = fmax(worst_seed, dseed);
     }
+    pl_validation("grains.five_discs", "five-disc stack, frictionless (Table 2.2)",
+                  "seed's predicted forces, and rigid-disc theory within the seed's own errors", "0.01 % vs seed",
+                  "≤ %.4f %% vs seed on all 10 contacts", worst_seed);
     pl_world_destroy(&f.w);
     ENSURE(!fail);
     return 0;
@@ -184,6 +199,7 @@ static int table_2_3_five_discs_friction(void) {
         {2, 0, 116104.0, -31109.8, "disc 3 - disc 1"}, {2, 3, 78747.3, 13561.1, "disc 3 - disc 4"},
         {3, -2, 50610.7, -13561.0, "disc 4 - wall 2"},
     };
+    double worst_f = 0; /* for the validation row */
     int fail = 0;
     for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++) {
         const int on = f.disc[rows[k].on];
@@ -191,7 +207,11 @@ static int table_2_3_five_discs_friction(void) {
         const double F = mag(contact_force_on(f.w, on, from)), S = hypot(rows[k].fx, rows[k].fy);
         fprintf(stderr, "  %-16s |F| %10.1f N  seed %10.1f  diff %.3f %%\n", rows[k].name, F, S, 100 * fabs(F - S) / S);
         if (!(fabs(F - S) <= 0.01 * S)) fail = 1;
+        worst_f = fmax(worst_f, 100 * fabs(F - S) / S);
     }
+    pl_validation("grains.five_discs_friction", "five-disc stack, friction 15° (Table 2.3)",
+                  "wall reactions = total weight 376 991.1 N, ΣF_x = 0; seed's |F| per contact", "1e-3 of the weight; 1 %",
+                  "ΣF_y = %.3f N, ΣF_x = %.3f N; |F| within %.2f %%", -sum.y, -sum.x, worst_f);
     ENSURE(!fail);
     ENSURE_NEAR(-sum.y, weight, 1e-3 * weight);
     ENSURE_NEAR(sum.x, 0, 1e-3 * weight);
@@ -215,6 +235,8 @@ static int table_2_4_impact(void) {
     const pl_body_info b1 = body(w, d1), b2 = body(w, d2);
     fprintf(stderr, "  impact: v1 = (%.4f, %.4f) v2 = (%.4f, %.4f); theory (2.598, 1.5) (-2.598, 4.5)\n",
             b1.velocity.x, b1.velocity.y, b2.velocity.x, b2.velocity.y);
+    pl_validation("grains.impact", "two-disc impact (Table 2.4)", "elastic collision (2.598, 1.5), (−2.598, 4.5) m/s",
+                  "1 %", "(%.3f, %.3f), (%.3f, %.3f)", b1.velocity.x, b1.velocity.y, b2.velocity.x, b2.velocity.y);
     const double s = 3 * sqrt(3.0) / 2;
     ENSURE_REL(b1.velocity.x, s, 0.01);
     ENSURE_REL(b1.velocity.y, 1.5, 0.01);

@@ -54,11 +54,16 @@ static int square_on_wall(int wall_first) {
     pl_contact_info c;
     ENSURE(poly_contact(w, sq, floor, &c));
     fprintf(stderr, "  square on wall: fn = %.9g N, m g = %.9g N, t = %.3g s\n", c.fn, mg, pl_world_time(w));
+    pl_validation("polygon.rest_force", "square on a wall / on a square / disc on a box / square on two discs",
+                  "contact force = m g", "1e-3", "%s: %.2e", wall_first ? "wall (listed first)" : "wall (listed second)",
+                  fabs(c.fn - mg) / mg);
     ENSURE_REL(c.fn, mg, 1e-3);
     ENSURE_NEAR(fabs(c.normal.y), 1, 1e-12);
     ENSURE_NEAR(c.point.x, 0.01, 1e-9);
     const double d = mg * (L / 2) / (Y * L + mg / 2);
     fprintf(stderr, "  depth %.6g m (analytic %.6g m)\n", L / 2 - b.position.y, d);
+    pl_validation("polygon.rest_depth", "resting depth of a square on a wall", "d = m g (L/2)/(Y L + m g/2)",
+                  "1e-3 of d", "%.5g m vs %.5g m (%.1e)", L / 2 - b.position.y, d, fabs(L / 2 - b.position.y - d) / d);
     ENSURE_NEAR(L / 2 - b.position.y, d, 1e-3 * d);
     ENSURE_NEAR(b.angle, 0, 1e-9);
     pl_world_destroy(&w);
@@ -79,6 +84,7 @@ static int square_rests_on_square(void) {
     pl_contact_info c;
     ENSURE(poly_contact(w, sq, base, &c));
     fprintf(stderr, "  square on square: fn = %.9g N, m g = %.9g N\n", c.fn, b.mass * g);
+    pl_validation("polygon.rest_force", "", "", "", "square: %.2e", fabs(c.fn - b.mass * g) / (b.mass * g));
     ENSURE_REL(c.fn, b.mass * g, 1e-3);
     ENSURE_NEAR(fabs(c.normal.y), 1, 1e-9);
     ENSURE_NEAR(b.angle, 0, 1e-6);
@@ -98,6 +104,7 @@ static int disc_rests_on_square(void) {
     pl_contact_info c;
     ENSURE(poly_contact(w, disc, base, &c));
     fprintf(stderr, "  disc on square: fn = %.9g N, m g = %.9g N\n", c.fn, b.mass * g);
+    pl_validation("polygon.rest_force", "", "", "", "disc on a box: %.2e", fabs(c.fn - b.mass * g) / (b.mass * g));
     ENSURE_REL(c.fn, b.mass * g, 1e-3);
     ENSURE_NEAR(fabs(c.normal.y), 1, 1e-9);
     ENSURE_NEAR(c.point.x, 0.004, 1e-9);
@@ -126,6 +133,8 @@ static int square_rests_on_disc_pile(void) {
     pl_contact_info c1, c2;
     ENSURE(poly_contact(w, sq, d1, &c1) && poly_contact(w, sq, d2, &c2));
     fprintf(stderr, "  square on two discs: fn = %.9g + %.9g N, m g = %.9g N\n", c1.fn, c2.fn, b.mass * g);
+    pl_validation("polygon.rest_force", "", "", "", "two discs: %.2e, symmetric to %.1e",
+                  fabs(c1.fn + c2.fn - b.mass * g) / (b.mass * g), fabs(c1.fn - c2.fn) / c2.fn);
     ENSURE_REL(c1.fn + c2.fn, b.mass * g, 1e-3);
     ENSURE_REL(c1.fn, c2.fn, 1e-6);
     ENSURE_NEAR(b.angle, 0, 1e-6);
@@ -163,6 +172,8 @@ static int restitution_flat_impacts(void) {
     for (int k = 0; k < 3; k++) {
         const double e0 = rebound(0, es[k]), e1 = rebound(1, es[k]), e2 = rebound(2, es[k]);
         fprintf(stderr, "  e = %.1f: square-wall %.4f, square-square %.4f (disc-box %.4f)\n", es[k], e0, e1, e2);
+        pl_validation("polygon.restitution", "flat-impact restitution (square on a wall, square on a square)",
+                      "e from ζ", "0.01", "e = %.1f: %.4f, %.4f", es[k], e0, e1);
         ENSURE_NEAR(e0, es[k], 0.01);
         ENSURE_NEAR(e1, es[k], 0.01);
     }

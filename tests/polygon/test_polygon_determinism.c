@@ -53,6 +53,8 @@ static int same_scene_same_hash(void) {
     const uint64_t h1 = poured_scene(7, 3000), h2 = poured_scene(7, 3000), h3 = poured_scene(8, 3000);
     fprintf(stderr, "  hashes %016llx %016llx (seed 8: %016llx)\n", (unsigned long long)h1,
             (unsigned long long)h2, (unsigned long long)h3);
+    pl_validation("polygon.determinism", "determinism of a poured polygon scene", "same state hash", "exact", "%s",
+                  h1 == h2 ? "identical" : "DIFFERENT");
     ENSURE(h1 != 0);
     ENSURE(h1 == h2);
     ENSURE(h1 != h3);
@@ -93,12 +95,16 @@ static int energy_balance_first_bounce(void) {
     double rel, diss, rel2, diss2;
     ENSURE(first_bounce(1.0, 0.0, 0.1, &rel, &diss));
     fprintf(stderr, "  no dissipation: balance %.3g of the impact energy\n", rel);
+    pl_validation("polygon.energy_bounce", "energy balance after a bounce (square on a wall)",
+                  "0 (balance / impact energy)", "5e-3 elastic; 3e-2 with e = 0.5, μ = 0.5, halving with Δt",
+                  "elastic %.1e", rel);
     ENSURE(fabs(rel) < 5e-3);
     ENSURE(diss == 0);
     ENSURE(first_bounce(0.5, 0.5, 0.1, &rel, &diss));
     ENSURE(first_bounce(0.5, 0.5, 0.05, &rel2, &diss2));
     fprintf(stderr, "  e = 0.5, mu = 0.5: balance %.3g (dt / 2: %.3g), dissipated %.3g of the impact energy\n",
             rel, rel2, diss);
+    pl_validation("polygon.energy_bounce", "", "", "", "e = 0.5, μ = 0.5: %.1e (Δt/2: %.1e)", rel, rel2);
     /* dissipation is booked per step: a first-order error that halves with the time step */
     ENSURE(fabs(rel) < 3e-2);
     ENSURE(fabs(rel2) < 0.6 * fabs(rel) + 1e-3);
@@ -147,6 +153,8 @@ static int energy_balance_pile(void) {
     ENSURE(pile(0.5, &rel1, &ke1));
     fprintf(stderr, "  160-grain collapse: balance / dissipated = %.3g (mu 0), %.3g (mu 0.5); "
             "final / peak kinetic energy %.2g, %.2g\n", rel0, rel1, ke0, ke1);
+    pl_validation("polygon.energy_pile", "energy balance, 160-grain polygon collapse", "0 (balance / dissipated)",
+                  "0.05", "%.1e (μ = 0), %.1e (μ = 0.5)", rel0, rel1);
     ENSURE(fabs(rel0) < 0.05 && fabs(rel1) < 0.05);
     ENSURE(ke0 < 1e-3 && ke1 < 1e-3);
     return 0;

@@ -129,6 +129,8 @@ static int tilting_floor_tips_near_45_deg(void) {
     fprintf(stderr, "  mu 1.5: tips at %.3f / %.3f / %.3f deg for kn 1e6 / 1e7 / 1e8 (rigid: 45); "
             "the corner had moved %.2g / %.2g / %.2g m along the floor (contact-point speed 1e-4 m/s passed at %.3g / %.3g / %.3g deg, while tipping)\n",
             tip1, tip2, tip3, c1, c2, c3, slide1, slide2, slide3);
+    pl_validation("polygon.tilt_tip", "square on a slowly tilting floor, μ = 1.5", "tips at 45° (rigid) before sliding",
+                  "converges with k_N; > 44° at 1e8", "%.1f° / %.1f° / %.1f° at k_N = 1e6 / 1e7 / 1e8", tip1, tip2, tip3);
     /* tips first: the contact corner has not slid (< 1 % of L) when the rotation reaches 0.2 rad */
     ENSURE(fabs(c1) < 0.01 * L && fabs(c2) < 0.01 * L && fabs(c3) < 0.01 * L);
     ENSURE(tip1 < tip2 && tip2 < tip3);                      /* converges from below ... */
@@ -143,6 +145,7 @@ static int tilting_floor_slides_at_atan_mu(void) {
     ENSURE(tilt_floor(mu, 1e6, 0.05, &tip, &slide, &corner));
     fprintf(stderr, "  mu 0.5: slides at %.3f deg (atan mu = %.3f deg), tips at %.3g deg\n", slide,
             atan(mu) * 180 / PI, tip);
+    pl_validation("polygon.tilt_slide", "same, μ = 0.5", "slides at atan μ = 26.57°", "0.3°", "%.2f°", slide);
     ENSURE_NEAR(slide, atan(mu) * 180 / PI, 0.3);
     ENSURE(tip == 90 || tip > slide);
     return 0;
@@ -155,6 +158,8 @@ static int slides_at_50_deg(void) {
     const double a = 9.81 * (sin(th) - mu * cos(th));
     const double a_meas = (r.v_slope - r.v_mid) / (r.t_end - r.t_mid);
     fprintf(stderr, "  50 deg, mu 0.5: a = %.5g m/s^2 (analytic %.5g), turn %.3g rad\n", a_meas, a, r.turn);
+    pl_validation("polygon.incline_slide", "sliding block on fixed slopes (50°, μ = 0.5; 25°, μ = 0.3)",
+                  "a = g (sin θ − μ cos θ)", "1 %", "%.4f vs %.4f m/s²", a_meas, a);
     ENSURE_REL(a_meas, a, 0.01);
     ENSURE(fabs(r.turn) < 0.02);
     return 0;
@@ -167,6 +172,7 @@ static int slides_at_25_stays_at_15_deg(void) {
     const double a = 9.81 * (sin(th) - mu * cos(th));
     const double a_meas = (r.v_slope - r.v_mid) / (r.t_end - r.t_mid);
     fprintf(stderr, "  25 deg, mu 0.3: a = %.5g m/s^2 (analytic %.5g), turn %.3g rad\n", a_meas, a, r.turn);
+    pl_validation("polygon.incline_slide", "", "", "", "%.4f vs %.4f m/s²", a_meas, a);
     ENSURE_REL(a_meas, a, 0.01);
     ENSURE(fabs(r.turn) < 0.02);
     ENSURE(run_incline(15, mu, 1e6, 0.3, &r));

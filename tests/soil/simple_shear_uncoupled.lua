@@ -16,6 +16,9 @@ scene.on_finish = function(w)
     umax = math.max(umax, math.abs(p.du) / row.sv0)
   end
   print(string.format("uncoupled: worst |du - drop| = %.3f sigma'_v0, largest |du| %.3f, largest drop %.3f", worst, umax, seen))
+  -- the row of docs/validation.md (tests/harness.h: pl_validation; ctest label validation-doc)
+  print(string.format("VALIDATION|soil.simple_shear_uncoupled|same with the coupling off (FLUID_CONSOLIDATION 0)|"
+    .. "must fail the criterion|worst > 0.1 σ'_v0|worst %.3f σ'_v0", worst))
   assert(seen > 0.1, "the dry constant-volume sample hardly changed")
   assert(worst > 0.1, "without the coupling the criterion should fail, but |du - drop| <= 0.1 sigma'_v0")
   print("simple_shear uncoupled: the criterion fails as it must: PASS")

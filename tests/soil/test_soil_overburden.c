@@ -71,6 +71,8 @@ static int overburden_exact(void) {
     const double ref = (wet * (0.030 - 0.02) / H + wet * (0.065 - 0.02) / H + wet + dry) / W;
     fprintf(stderr, "  overburden %.6f Pa, reference %.6f Pa (submerged %.4f N/m, dry %.4f N/m per disc)\n", r.overburden,
             ref, wet, dry);
+    pl_validation("soil.overburden", "overburden of a region (submerged and dry grains)", "Σ weights above / width",
+                  "1e-12", "%.1e", fabs(r.overburden - ref) / ref);
     ENSURE_NEAR(r.overburden, ref, 1e-12 * ref);
     pl_world_destroy(&w);
     /* gravity not along -y: not defined, 0 */

@@ -91,6 +91,9 @@ static int test_quicksand_onset(void) {
     }
     fprintf(stderr, "  bed n = %.4f (areal), i_c = (1 - n)(G_s - 1) = %.4f; quick at %.4f (%+.1f%%); excess head at the floor / (i H) = %.3f\n",
             n, i_c, il, 100 * (il - i_c) / i_c, pex_ratio);
+    pl_validation("soil.quicksand", "quicksand onset with the coupling on", "i_c = (1 − n)(G_s − 1)",
+                  "10 %; excess head at the floor / (i H) within 10 % of 1", "%+.1f %% (n = %.3f); excess head ratio %.3f",
+                  100 * (il - i_c) / i_c, n, pex_ratio);
     ENSURE(il > 0);
     ENSURE_NEAR(il, i_c, 0.10 * i_c);
     ENSURE_NEAR(pex_ratio, 1.0, 0.10);

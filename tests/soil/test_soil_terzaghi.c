@@ -103,6 +103,9 @@ static int test_terzaghi_solver(void) {
     double iso;
     double worst = run(1, 1, &iso);
     fprintf(stderr, "  worst relative error of U: %.4f%%; isochrone at mid-depth: %.2e u0\n", 100 * worst, iso);
+    pl_validation("soil.terzaghi", "consolidation, grain-free column with a prescribed skeleton",
+                  "Terzaghi U(T_v) at T_v = 0.1, 0.2, 0.5 (Craig §7.6)", "1 %",
+                  "%.4f %%; mid-depth isochrone %.1e u₀", 100 * worst, iso);
     ENSURE(worst <= 0.01);
     ENSURE(iso <= 0.01);
     return 0;
@@ -112,6 +115,8 @@ static int test_without_fluid_storage_fails(void) {
     double iso;
     double worst = run(0, 0, &iso);
     fprintf(stderr, "  FLUID_CONSOLIDATION 0 (fluid compressibility ignored): worst error of U %.1f%%\n", 100 * worst);
+    pl_validation("soil.terzaghi_no_storage", "same with FLUID_CONSOLIDATION 0 (no fluid storage)", "must miss Terzaghi",
+                  "> 5 %", "misses by %.1f %%", 100 * worst);
     ENSURE(worst > 0.05);
     return 0;
 }

@@ -152,6 +152,8 @@ static int test_skempton_b(void) {
     double B_th = 1 / (1 + dr.n * M / Kf);
     fprintf(stderr, "  drained modulus M = %.4g Pa; K_f = 100 M = %.4g Pa; B = %.4f (theory %.4f); undrained settlement %.2f%% of drained\n",
             M, Kf, B, B_th, 100 * un.settle / dr.settle);
+    pl_validation("soil.undrained", "undrained loading of a sealed sample, K_f = 100 M", "Skempton B = 1/(1 + nM/K_f) ≈ 1",
+                  "B ≥ 0.9; pieces cut every 20 steps within 2 %", "B = %.4f (theory %.4f)", B, B_th);
     ENSURE(B >= 0.9);
     ENSURE(B <= 1.05); /* the water cannot carry more than the load */
     ENSURE(un.settle < 0.1 * dr.settle);
@@ -177,6 +179,7 @@ static int test_skempton_b_lagged_pieces(void) {
     const double B = un.du / un.dsig, Bl = un_lag.du / un_lag.dsig;
     fprintf(stderr, "  B with pieces cut at every solve %.4f, every 20 grain steps %.4f (difference %.2f%%)\n", B, Bl,
             100 * fabs(Bl - B) / B);
+    pl_validation("soil.undrained", "", "", "", "lagged pieces %.4f (%.2f %%)", Bl, 100 * fabs(Bl - B) / B);
     ENSURE(Bl >= 0.9);
     ENSURE(fabs(Bl - B) <= 0.02 * B);
     ENSURE(un_lag.settle < 0.1 * dr.settle);
@@ -188,6 +191,8 @@ static int test_drained_limit(void) {
     ENSURE(run(1, 1e5, 2.2e9, 5e-5, 1, &dr, 1) == 0);
     fprintf(stderr, "  drained limit: max |p - p_hydrostatic| / p_floor = %.2e while the sample settles %.2e m\n", dr.hyd_dev,
             dr.settle);
+    pl_validation("soil.drained", "drained limit while grains move", "hydrostatic pressure unchanged", "1e-6 relative",
+                  "%.1e", dr.hyd_dev);
     ENSURE(dr.settle > 1e-6);
     ENSURE(dr.hyd_dev <= 1e-6);
     return 0;

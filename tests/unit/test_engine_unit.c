@@ -218,6 +218,8 @@ static int neighbour_list_finds_every_contact(void) {
     }
     fprintf(stderr, "  600 discs, 5000 steps: %lld rebuilds, %d contacts at the end, all found\n",
             (long long)w->rebuilds, pl_world_contact_count(w));
+    pl_validation("grains.neighbour_list", "neighbour list", "brute-force contact search", "exact",
+                  "identical at 10 checkpoints (600 discs, %d contacts at the end)", pl_world_contact_count(w));
     ENSURE(w->rebuilds < 5000 / 2);
     pl_world_destroy(&w);
     return 0;
@@ -277,6 +279,9 @@ static int neighbour_list_long_polygons(void) {
     }
     fprintf(stderr, "  300 discs and 2 slabs, %d checks over 10000 steps: %lld rebuilds, %d slab contacts seen, "
                     "all found\n", checks, (long long)w->rebuilds, slab_contacts);
+    pl_validation("grains.neighbour_list_polygons", "neighbour list with long polygons (slabs)",
+                  "brute-force contact search", "exact", "identical at %d checks, %d slab contacts seen", checks,
+                  slab_contacts);
     ENSURE(slab_contacts > 20); /* the slabs did land and touch grains (measured 38) */
     pl_world_destroy(&w);
     return 0;
@@ -291,6 +296,8 @@ static int determinism_same_hash(void) {
     const uint64_t ha = pl_world_state_hash(a), hb = pl_world_state_hash(b), hc = pl_world_state_hash(c);
     fprintf(stderr, "  hashes %016llx %016llx (other seed %016llx)\n", (unsigned long long)ha, (unsigned long long)hb,
             (unsigned long long)hc);
+    pl_validation("grains.determinism", "determinism", "same state hash in two runs", "exact", "%s",
+                  ha == hb ? "identical" : "DIFFERENT");
     ENSURE(ha == hb);
     ENSURE(ha != hc);
     pl_world_destroy(&a);
@@ -324,6 +331,8 @@ static int energy_balance_settling(void) {
     const double b0 = settle_balance(0.1, 0.0, &d0);
     ENSURE(fabs(b0) < 1e-3 * d0);
     const double b1 = settle_balance(0.1, 0.5, &d1), b2 = settle_balance(0.02, 0.5, &d2);
+    pl_validation("grains.energy_balance", "energy balance, pile settling with friction", "every joule accounted",
+                  "2e-3 of energy exchanged", "%.1e (dt 0.1 × crit), %.1e (0.02)", fabs(b1) / d1, fabs(b2) / d2);
     ENSURE(fabs(b1) < 2e-3 * d1);
     ENSURE(fabs(b2) < 0.1 * fabs(b1)); /* converges with dt */
     return 0;

@@ -1,0 +1,3 @@
+-- nasty: deep recursion in the main chunk
+local function f(n) return f(n + 1) + 1 end
+f(1)

@@ -1,0 +1,2 @@
+-- nasty: the scene returns a function
+return function() end

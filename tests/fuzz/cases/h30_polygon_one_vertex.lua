@@ -1,0 +1,5 @@
+-- nasty: a polygon of one vertex
+local w = porelab.world { gravity = { 0, -9.81 } }
+local m = w:material { name = "sand", density = 2650, kn = 1e6, friction = 0.5 }
+w:polygon { vertices = { { 0, 0 } }, material = m }
+return { world = w }

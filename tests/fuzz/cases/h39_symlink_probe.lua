@@ -1,0 +1,3 @@
+-- nasty: os.remove/rename are sandboxed
+os.rename('out', '../moved')
+os.remove('../scene')

@@ -1,0 +1,5 @@
+-- nasty: yield from the main chunk and from a hook
+local w = porelab.world { gravity = { 0, -9.81 } }
+local m = w:material { name = "sand", density = 2650, kn = 1e6, friction = 0.5 }
+w:disc { center = { 0, 0 }, radius = 0.1, material = m }
+return { world = w, on_frame = function() coroutine.yield(1) end }
