@@ -1,1 +1,2 @@
-list(APPEND PL_ENGINE_SOURCES src/core/status.c src/core/hash.c src/core/params.c)
+list(APPEND PL_ENGINE_SOURCES src/core/status.c src/core/hash.c src/core/params.c
+  src/core/alloc.c src/core/assert.c)
