@@ -1,0 +1,2 @@
+#include "fluid/common/view.h"
+#include "darcy.h"

@@ -1,0 +1,1 @@
+#include "../hydrostatic/hydro.h"

@@ -1,0 +1,2 @@
+#include "../core/alloc.h"
+#include "mesh/grid.h"

@@ -1,0 +1,1 @@
+#include "dem/contact.h"

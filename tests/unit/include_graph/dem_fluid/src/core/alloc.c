@@ -1,0 +1,3 @@
+#include "core/alloc.h"
+#include "alloc.h"
+#include <stdlib.h>

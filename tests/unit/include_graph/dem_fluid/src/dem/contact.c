@@ -1,0 +1,2 @@
+#include "geom/clip.h"
+#  include "core/alloc.h"

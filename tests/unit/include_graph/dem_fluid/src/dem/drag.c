@@ -1,0 +1,1 @@
+#include "fluid/darcy/darcy.h"

@@ -1,0 +1,1 @@
+#include "porelab/core.h"
