@@ -8,8 +8,8 @@
  * - the 2D -> 3D porosity mapping sends hexagonal discs (n = 1 - pi / (2 sqrt 3)) to FCC
  *   spheres (n = 1 - pi / (3 sqrt 2)) exactly. */
 #include "harness.h"
-#include "dem/world_internal.h"
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_world.h"
+#include "fluid/darcy/darcy_internal.h"
 #include "porelab/fluid.h"
 #include "porelab/world.h"
 #include <stdlib.h>
@@ -136,7 +136,7 @@ static int test_exact_vs_pixels(void) {
     }
     fprintf(stderr, "  exact: element solid areas sum to %.15g, grains %.15g\n", total, grains);
     ENSURE_REL(total, grains, 1e-10);
-    struct pl_fluid *f = ((struct pl_world *)w)->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     double mean_area = 0.96 / ne, prev = 1e300;
     fprintf(stderr, "  pixellation (seed 000 §3.6) against exact clipping: pixels, mean |error| / element area, time per update\n");
     for (int res = 4; res <= 64; res *= 2) {

@@ -7,8 +7,8 @@
  * maximum nodal error must fall with every refinement; the observed order is printed.
  * Explicit (thesis §3.9.2, sub-stepped below its computed limit) against implicit. */
 #include "harness.h"
-#include "dem/world_internal.h"
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_world.h"
+#include "fluid/darcy/darcy_internal.h"
 #include "porelab/fluid.h"
 #include "porelab/world.h"
 #include "fluid/wave_rod.h"
@@ -147,7 +147,7 @@ static int test_explicit_vs_implicit(void) {
     ENSURE(e_exp < 0.01);
     ENSURE(e_imp < 0.05);
     /* the Gershgorin limit is safe: lambda_max(M^-1 K) by power iteration is below the bound */
-    struct pl_fluid *f = ((struct pl_world *)w)->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     int nn = f->mesh.nn;
     double *x = malloc(sizeof(double) * nn), *y = malloc(sizeof(double) * nn);
     for (int i = 0; i < nn; i++) x[i] = f->sys.is_dir[i] ? 0 : ((i * 7919) % 13) - 6.0;

@@ -1,6 +1,5 @@
 /* Read-only diagnostics: energies, momentum, contacts, bounds and the state hash. */
 #include "dem/world_internal.h"
-#include "fluid/fluid_snapshot.h"
 #include <math.h>
 #include <string.h>
 
@@ -113,22 +112,3 @@ void pl_world_bounds(const pl_world *w, pl_vec2 *lo, pl_vec2 *hi) {
     *hi = h;
 }
 
-uint64_t pl_world_state_hash(const pl_world *w) {
-    uint64_t h = PL_HASH_SEED;
-    h = pl_hash_bytes(h, &w->time, sizeof w->time);
-    h = pl_hash_bytes(h, &w->step, sizeof w->step);
-    h = pl_hash_bytes(h, w->pos, (size_t)w->n * sizeof *w->pos);
-    h = pl_hash_bytes(h, w->vel, (size_t)w->n * sizeof *w->vel);
-    h = pl_hash_bytes(h, w->angle, (size_t)w->n * sizeof *w->angle);
-    h = pl_hash_bytes(h, w->omega, (size_t)w->n * sizeof *w->omega);
-    for (int k = 0; k < w->pair_n; k++) {
-        const pl_pair *p = &w->pairs[k];
-        if (!p->touching) continue;
-        h = pl_hash_bytes(h, &p->a, sizeof p->a);
-        h = pl_hash_bytes(h, &p->b, sizeof p->b);
-        h = pl_hash_bytes(h, &p->fs, sizeof p->fs);
-        if (p->mr != 0) h = pl_hash_bytes(h, &p->mr, sizeof p->mr); /* rolling: no change without it */
-        h = pl_hash_bytes(h, &p->area_prev, sizeof p->area_prev);
-    }
-    return pl__fluid_hash(w->fluid, h); /* pore-fluid state (no change without a fluid) */
-}

@@ -4,10 +4,9 @@
  *    shear the sample at the same time (the top wall of seed 003 Fig. 5.19);
  *  - the pore fluid's force on the body counted in the measured force, so that the servo holds
  *    the total (contact + water) force: the top wall of an undrained sample under a constant
- *    total vertical load. The fluid adds its forces to dynamic bodies only (fluid_hook.c), so
- *    the force on this kinematic body is evaluated here from the current field. */
+ *    total vertical load. The world asks the models for this wall's load too and leaves it in
+ *    the external-force column (it is not integrated: the wall's motion is prescribed). */
 #include "dem/world_internal.h"
-#include "porelab/fluid.h"
 #include <math.h>
 
 pl_status pl_world_set_servo_drive(pl_world *w, int i, pl_vec2 drive, int with_fluid) {
@@ -26,12 +25,11 @@ pl_status pl_world_set_servo_drive(pl_world *w, int i, pl_vec2 drive, int with_f
 pl_vec2 pl__servo_velocity(pl_world *w, int i) {
     const pl_motion *m = &w->law[i];
     double fc = -(w->force[i].x * m->servo_dir.x + w->force[i].y * m->servo_dir.y);
-    if (m->servo_fluid && w->fluid) {
-        double on = 0;
-        pl_world_get_flag(w, "FLUIDS_ON", &on);
-        pl_vec2 F = {0, 0};
-        if (on != 0 && pl_world_fluid_body_force(w, i, &F, NULL) == PL_OK)
-            fc -= F.x * m->servo_dir.x + F.y * m->servo_dir.y;
+    if (m->servo_fluid && w->ext_force && i < w->ext_cap) {
+        /* the attached models' load on this wall, from the external-force column the world
+           filled before the motion laws (world/models.c) */
+        const pl_vec2 F = w->ext_force[i];
+        fc -= F.x * m->servo_dir.x + F.y * m->servo_dir.y;
     }
     const double err = (m->servo_target - fc) / m->servo_target;
     double v = m->servo_gain * err;

@@ -1,5 +1,4 @@
 list(APPEND PL_ENGINE_SOURCES
-  src/dem/world.c
   src/dem/material.c
   src/dem/body.c
   src/dem/neighbor.c
@@ -9,8 +8,7 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/servo_drive.c
   src/dem/timestep.c
   src/dem/guards.c
-  src/dem/flags.c
   src/dem/diagnostics.c
   src/dem/stress.c
-  src/dem/vtk.c
-  src/dem/snapshot.c)
+
+  src/dem/vtk.c)

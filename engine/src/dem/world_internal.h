@@ -1,5 +1,7 @@
-/* Private layout of the world. Engine modules (dem, fluid) include this; nothing outside
- * the engine does. Bodies are stored as structure-of-arrays for the hot loops. */
+/* Private layout of the world: the grain store (bodies as structure-of-arrays for the hot loops,
+ * materials, neighbour pairs with their contact history, time, energy tallies) and, at its end,
+ * the fields of the world layer (engine/src/world: attached models, flags). The grain engine
+ * (dem/) and the world layer include this; models never do (they see world/model.h). */
 #ifndef PL_WORLD_INTERNAL_H
 #define PL_WORLD_INTERNAL_H
 
@@ -77,8 +79,6 @@ typedef struct pl_motion {
 /* Acceleration (m/s^2) of a prescribed body's law at time t: the sinusoid's (with its ramp)
    in closed form, 0 for a constant velocity; returns 0 for laws without one (servo, hinge). */
 int pl__law_acceleration(const pl_motion *m, double t, pl_vec2 *acc);
-
-struct pl_fluid; /* fluid module (engine/src/fluid) */
 
 /* Per-body sums of the dashpot part (d*) and the tangential-spring part (s*) of the contact
    forces and moments of one step, for the exact energy tallies (integrate.c). */
@@ -161,11 +161,19 @@ struct pl_world {
     double ext0;                  /* e_external at the reference time */
     double pe0;                   /* gravitational energy at t = 0 */
 
-    /* flags (MIMES names), values indexed like the flag table */
-    double *flag_values;
+    /* external-force column: loads of the attached models on each body for this step, filled
+       by the world before the motion laws run (world/world.c); servo walls read it */
+    pl_vec2 *ext_force;
+    double *ext_moment;
+    uint8_t *wants_load;          /* per body: 1 when the world uses its external load */
+    int ext_cap;
 
-    /* fluid (NULL when no fluid model is attached) */
-    struct pl_fluid *fluid;
+    /* ---- world layer (engine/src/world only) ---- */
+    /* flags (MIMES names), values indexed like the flag table (world/flags.c) */
+    double *flag_values;
+    /* attached models in attachment order (world/models.c) */
+    struct pl_model_slot *models;
+    int model_n, model_cap;
 };
 
 /* Error helper: formats into w->error and returns status. */
@@ -207,13 +215,7 @@ double pl__kinetic_energy(const pl_world *w);
 double pl__elastic_energy(const pl_world *w);
 double pl__gravitational_energy(const pl_world *w);
 
-/* Flags */
-void pl__flags_init(pl_world *w);
-/* Marks a recognised flag as built (called by modules such as the fluid when they attach). */
-void pl__flags_mark_built(const char *name);
 
 /* Velocity of a servo-controlled body for this step (servo_drive.c). */
 pl_vec2 pl__servo_velocity(pl_world *w, int i);
-
-/* Fluid hooks (implemented in engine/src/fluid; see fluid_hook.h). */
 #endif

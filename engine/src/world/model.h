@@ -30,6 +30,7 @@ typedef struct pl_grain_view {
     const double *angle, *omega; /* rad, rad/s */
     const double *radius;        /* disc radius or bounding radius, m */
     const double *area;          /* m^2 */
+    const double *mass;          /* kg per m thickness */
     const int32_t *vert_offset, *vert_count;
     const pl_vec2 *verts;        /* world vertices of polygons and segments */
     const uint8_t *wants_load;   /* 1: the world uses this body's load (dynamic discs and
@@ -57,6 +58,9 @@ typedef struct pl_model_class {
     size_t def_size;
     const pl_param *params;
     int nparams;
+    /* A new, empty instance (restoring a snapshot into a world that has none); NULL when out of
+       memory. */
+    void *(*create)(void);
     /* Update the model's state over [t, t + dt] (solve when due). Errors set the world's
        message through pl__world_error and return its status. */
     pl_status (*advance)(void *self, pl_world *w, const pl_grain_view *g, double dt);
@@ -95,9 +99,13 @@ pl_status pl__world_error(pl_world *w, pl_status s, const char *fmt, ...)
     ;
 double pl__world_time(const pl_world *w);
 pl_vec2 pl__world_gravity(const pl_world *w);
-/* The world's flag block of a class with MIMES flags: the class's def, stored where the flags
-   are (so that a flag and the typed def are one storage). NULL for a class without flags. */
-const void *pl__world_flag_def(const pl_world *w, const pl_model_class *cls);
+/* The world's flag values of a class with MIMES flags, in the order of its flag-carrying
+   parameter rows: the one storage of that class's def (a flag and the typed def cannot differ).
+   NULL for a class without flags. */
+const double *pl__world_flag_values(const pl_world *w, const pl_model_class *cls);
+/* Checks v (one value per flag-carrying row) against the rows and stores it; `what` names the
+   call in the message. Nothing changes on error. */
+pl_status pl__world_set_flag_values(pl_world *w, const pl_model_class *cls, const double *v, const char *what);
 /* Acceleration of a prescribed body's law at time t (shaking-table frames); 0 if it has none. */
 int pl__world_body_acceleration(const pl_world *w, int body, double t, pl_vec2 *acc);
 

@@ -1,20 +1,16 @@
 /* The fluid model seen from the world: public API of porelab/fluid.h (quads, lines, solves,
  * queries) and the per-step hook (fluid_hook.h) that couples the Darcy field to the grains
  * (seed 000 §3.3, Fig. 3-1; DESIGN §2 step 2). */
-#include "dem/world_internal.h"
-#include "fluid/fluid_hook.h"
-#include "fluid/fluid_internal.h"
-#include "fluid/fluid_world.h"
+#include "world/model.h"
+#include "fluid/darcy/darcy_internal.h"
+#include "fluid/darcy/darcy_world.h"
+#include "fluid/darcy/darcy_model.h"
+#include "porelab/darcy.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-double pl__fluid_flag(const pl_world *w, const char *name, double def) {
-    double v;
-    if (pl_world_get_flag(w, name, &v) == PL_OK) return v;
-    return def;
-}
 
 pl_fl_params pl_fl_default_params(void) {
     pl_fl_params p;
@@ -37,35 +33,38 @@ pl_fl_params pl_fl_default_params(void) {
     return p;
 }
 
+/* The resolved parameters of one update: the typed def (one storage with the MIMES flags) plus
+   gravity. Read by row offset, never by name. */
 void pl__fluid_read_params(pl_world *w, pl_fl_params *p) {
+    pl_darcy_def d;
+    pl_world_get_darcy(w, &d);
     *p = pl_fl_default_params();
-    p->on = pl__fluid_flag(w, "FLUIDS_ON", 0) != 0;
-    p->first_step_static = pl__fluid_flag(w, "FIRST_STEP_STATIC", 0) != 0;
-    p->perm_mode = (int)pl__fluid_flag(w, "FLUID_PERM", 0);
-    p->perm_low = pl__fluid_flag(w, "FLUID_PERM_LOW", p->perm_low);
-    p->perm_high = pl__fluid_flag(w, "FLUID_PERM_HIGH", p->perm_high);
-    p->solve_every = (int)pl__fluid_flag(w, "FLUID_SOLVE_TIMESTEPS", 1);
-    if (p->solve_every < 1) p->solve_every = 1;
-    p->density = pl__fluid_flag(w, "FLUID_DENSITY", p->density);
-    p->storage = pl__fluid_flag(w, "FLUID_STORAGE", p->storage);
-    p->viscosity = pl__fluid_flag(w, "FLUID_VISCOSITY", p->viscosity);
-    p->perm_units = (int)pl__fluid_flag(w, "FLUID_PERM_UNITS", 0);
-    p->method = (int)pl__fluid_flag(w, "FLUID_METHOD", 0);
-    p->mass_consistent = (int)pl__fluid_flag(w, "FLUID_MASS", 0);
-    p->explicit_safety = pl__fluid_flag(w, "FLUID_EXPLICIT_SAFETY", p->explicit_safety);
-    p->porosity_method = (int)pl__fluid_flag(w, "FLUID_POROSITY_METHOD", 0);
-    p->pixels = (int)pl__fluid_flag(w, "FLUID_PIXELS", p->pixels);
-    p->porosity_map = (int)pl__fluid_flag(w, "FLUID_POROSITY_MAP", p->porosity_map);
-    p->kc_mode = (int)pl__fluid_flag(w, "FLUID_KC_MODE", 0);
-    p->kc_c1 = pl__fluid_flag(w, "FLUID_KC_C1", p->kc_c1);
-    p->drag = pl__fluid_flag(w, "FLUID_DRAG", 1) != 0;
-    p->geometry_flag = pl__fluid_flag(w, "FLUID_GEOMETRY_FLAG", 0) != 0;
-    p->pressures_flag = pl__fluid_flag(w, "FLUID_PRESSURES_FLAG", 0) != 0;
-    p->consolidation = pl__fluid_flag(w, "FLUID_CONSOLIDATION", 0) != 0;
-    p->force_reuse = pl__fluid_flag(w, "FLUID_FORCE_REUSE", 0) != 0;
-    p->bulk_modulus = pl__fluid_flag(w, "FLUID_BULK_MODULUS", 2.2e9);
-    p->porosity_every = (int)fmin(pl__fluid_flag(w, "FLUID_POROSITY_TIMESTEPS", 0), 2e9);
-    p->gravity = w->def.gravity;
+    p->on = d.on;
+    p->first_step_static = d.first_step_static;
+    p->perm_mode = d.perm_mode;
+    p->perm_low = d.perm_low;
+    p->perm_high = d.perm_high;
+    p->solve_every = d.solve_every;
+    p->density = d.density;
+    p->storage = d.storage;
+    p->viscosity = d.viscosity;
+    p->perm_units = d.perm_units;
+    p->method = d.method;
+    p->mass_consistent = d.mass_consistent;
+    p->explicit_safety = d.explicit_safety;
+    p->porosity_method = d.porosity_method;
+    p->pixels = d.pixels;
+    p->porosity_map = d.porosity_map;
+    p->kc_mode = d.kc_mode;
+    p->kc_c1 = d.kc_c1;
+    p->drag = d.drag;
+    p->geometry_flag = d.geometry_flag;
+    p->pressures_flag = d.pressures_flag;
+    p->consolidation = d.consolidation;
+    p->force_reuse = d.force_reuse;
+    p->bulk_modulus = d.bulk_modulus;
+    p->porosity_every = d.porosity_every;
+    p->gravity = pl__world_gravity(w);
     double g = hypot(p->gravity.x, p->gravity.y);
     if (g > 0) {
         p->g = g;
@@ -77,28 +76,46 @@ void pl__fluid_read_params(pl_world *w, pl_fl_params *p) {
 }
 
 pl_fl_bodies pl__fluid_world_bodies(const pl_world *w) {
+    const pl_grain_view g = pl__world_grains(w);
     pl_fl_bodies b;
-    b.n = w->n;
-    b.shape = w->shape;
-    b.pos = w->pos;
-    b.radius = w->radius;
-    b.vert_offset = w->vert_offset;
-    b.vert_count = w->vert_count;
-    b.verts = w->verts_world;
+    b.n = g.n;
+    b.shape = g.shape;
+    b.pos = g.pos;
+    b.radius = g.radius;
+    b.vert_offset = g.vert_offset;
+    b.vert_count = g.vert_count;
+    b.verts = g.verts;
     return b;
 }
 
+/* The world's Darcy model, attached on first use (the first fluid quad or line). */
 static struct pl_fluid *model(pl_world *w) {
-    if (!w->fluid) {
-        struct pl_fluid *f = calloc(1, sizeof *f);
-        if (!f) return NULL;
-        f->mesh_dirty = 1;
-        f->par = pl_fl_default_params();
-        snprintf(f->geometry_file, sizeof f->geometry_file, "geometry.flu");
-        snprintf(f->pressures_file, sizeof f->pressures_file, "pressures.flu");
-        w->fluid = f;
+    struct pl_fluid *f = pl__darcy(w);
+    if (f) return f;
+    f = pl__darcy_new();
+    if (!f) return NULL;
+    if (pl__world_attach(w, &pl_darcy_class, f) != PL_OK) {
+        pl__darcy_destroy(f);
+        return NULL;
     }
-    return w->fluid;
+    return f;
+}
+
+/* ---------------------------------------------------------------- parameters */
+
+pl_status pl_world_set_darcy(pl_world *w, const pl_darcy_def *def) {
+    int n = 0;
+    const pl_param *t = pl_darcy_param_table(&n);
+    double v[64];
+    for (int k = 0; k < n && k < 64; k++) v[k] = pl_param_read(&t[k], def);
+    return pl__world_set_flag_values(w, &pl_darcy_class, v, "darcy");
+}
+
+void pl_world_get_darcy(const pl_world *w, pl_darcy_def *out) {
+    int n = 0;
+    const pl_param *t = pl_darcy_param_table(&n);
+    const double *v = pl__world_flag_values(w, &pl_darcy_class);
+    for (int k = 0; k < n; k++) pl_param_write(&t[k], out, v[k]);
 }
 
 void pl__fluid_free_state(struct pl_fluid *f) {
@@ -117,8 +134,8 @@ void pl__fluid_free_state(struct pl_fluid *f) {
 
 /* Meshes and builds the system when the input changed. */
 static pl_status ensure_built(pl_world *w) {
-    struct pl_fluid *f = w->fluid;
-    if (!f) return pl__error(w, PL_ERR_STATE, "fluid: no fluid model (add a fluid quad first)");
+    struct pl_fluid *f = pl__darcy(w);
+    if (!f) return pl__world_error(w, PL_ERR_STATE, "fluid: no fluid model (add a fluid quad first)");
     pl_status st;
     /* a step, a solve or a setter building now takes over what a query applied before it:
        without the query it would have applied the changed lines itself (built() below) */
@@ -127,8 +144,8 @@ static pl_status ensure_built(pl_world *w) {
         pl__fluid_free_state(f);
         pl_fl_system_free(&f->sys);
         f->built = 0;
-        st = pl_fl_mesh_build(&f->mesh, f->quads, f->nq, f->msg, sizeof f->msg);
-        if (st != PL_OK) return pl__error(w, st, "%s", f->msg);
+        st = pl_mesh_build(&f->mesh, f->quads, f->nq, f->msg, sizeof f->msg);
+        if (st != PL_OK) return pl__world_error(w, st, "%s", f->msg);
         const int nn = f->mesh.nn, ne = f->mesh.ne;
         f->head = calloc((size_t)nn, sizeof(double));
         f->head_prev = calloc((size_t)nn, sizeof(double));
@@ -141,7 +158,7 @@ static pl_status ensure_built(pl_world *w) {
         f->stamp = calloc((size_t)ne, sizeof(int32_t));
         if (!f->head || !f->head_prev || !f->perm || !f->perm_assembled || !f->solid || !f->voidr || !f->porosity ||
             !f->grad || !f->stamp)
-            return pl__error(w, PL_ERR_NOMEM, "fluid: out of memory for %d nodes", nn);
+            return pl__world_error(w, PL_ERR_NOMEM, "fluid: out of memory for %d nodes", nn);
         for (int e = 0; e < ne; e++) { f->voidr[e] = 99; f->porosity[e] = 0.99; f->perm_assembled[e] = -1; }
         /* initial field: pressure head 0 (seed 000 §3.9.2: zero except on the boundary) */
         for (int i = 0; i < nn; i++) f->head[i] = pl_fl_z(f, f->mesh.xy[i]);
@@ -153,7 +170,7 @@ static pl_status ensure_built(pl_world *w) {
     }
     if (f->bc_dirty) {
         st = pl_fl_system_build(f);
-        if (st != PL_OK) return pl__error(w, st, "%s", f->msg[0] ? f->msg : "fluid: system build failed");
+        if (st != PL_OK) return pl__world_error(w, st, "%s", f->msg[0] ? f->msg : "fluid: system build failed");
         pl_fl_apply_dirichlet(f, f->head);
         f->static_valid = 0;
         f->bc_dirty = 0;
@@ -164,7 +181,7 @@ static pl_status ensure_built(pl_world *w) {
 pl_status pl__fluid_ensure_built(pl_world *w) { return ensure_built(w); }
 
 static pl_status write_outputs(pl_world *w) {
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     if (f->par.geometry_flag && !f->geometry_written) {
         pl_status st = pl_world_fluid_write_geometry(w, f->geometry_file);
         if (st != PL_OK) return st;
@@ -173,7 +190,7 @@ static pl_status write_outputs(pl_world *w) {
     if (f->par.pressures_flag) {
         if (!f->pressures_started) {
             FILE *fp = fopen(f->pressures_file, "w");
-            if (!fp) return pl__error(w, PL_ERR_IO, "fluid: cannot write %s", f->pressures_file);
+            if (!fp) return pl__world_error(w, PL_ERR_IO, "fluid: cannot write %s", f->pressures_file);
             fprintf(fp, "%% porelab fluid pressures: each row is t (s) then the pressure head (m) of every node\n");
             fclose(fp);
             f->pressures_started = 1;
@@ -185,7 +202,7 @@ static pl_status write_outputs(pl_world *w) {
 
 /* One fluid update: porosity, permeability, assembly, solve (static when dt <= 0). */
 pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     pl__fluid_read_params(w, &f->par);
     /* gravity or density changes move the prescribed total heads */
     pl_status st = ensure_built(w);
@@ -193,12 +210,13 @@ pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
     /* the pieces of the grains in the elements: at every update, or with
        FLUID_POROSITY_TIMESTEPS = P every P grain steps (and whenever bodies were added, the mesh
        was rebuilt or the solve is static); in between the last pieces stand */
-    const int lagged = f->par.porosity_every > 0 && !is_static && f->initialised && f->cover_bodies == w->n &&
+    const pl_grain_view g = pl__world_grains(w);
+    const int lagged = f->par.porosity_every > 0 && !is_static && f->initialised && f->cover_bodies == g.n &&
                        f->geom_since < f->par.porosity_every;
     if ((f->par.perm_mode == 1 || f->par.drag || f->par.consolidation) && !lagged) {
         pl_fl_bodies b = pl__fluid_world_bodies(w);
         st = pl_fl_update_porosity(f, &b);
-        if (st != PL_OK) return pl__error(w, st, "fluid: out of memory in the porosity update");
+        if (st != PL_OK) return pl__world_error(w, st, "fluid: out of memory in the porosity update");
         f->geom_since = 0;
     }
     if (f->par.consolidation) {
@@ -206,9 +224,9 @@ pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
         pl_fl_bodies b = pl__fluid_world_bodies(w);
         st = pl_fl_consolidation_alloc(f);
         if (st == PL_OK)
-            st = is_static || !(dt > 0) ? pl_fl_consolidation_reset(f, &b, w->angle)
-                                         : pl_fl_consolidation_source(f, &b, w->angle, dt);
-        if (st != PL_OK) return pl__error(w, st, "fluid: out of memory in the consolidation source");
+            st = is_static || !(dt > 0) ? pl_fl_consolidation_reset(f, &b, g.angle)
+                                         : pl_fl_consolidation_source(f, &b, g.angle, dt);
+        if (st != PL_OK) return pl__world_error(w, st, "fluid: out of memory in the consolidation source");
         pl_fl_consolidation_storage(f);
     } else if (f->src_active) {
         f->src_active = 0;
@@ -217,11 +235,11 @@ pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
     /* accelerating frame: the acceleration of its body at the time the solution stands for */
     const pl_vec2 acc0 = f->frame_acc;
     f->frame_acc = (pl_vec2){0, 0};
-    if (f->frame_body_plus1 > 0 && f->frame_body_plus1 <= w->n)
-        pl__law_acceleration(&w->law[f->frame_body_plus1 - 1], is_static ? w->time : f->out_time, &f->frame_acc);
+    if (f->frame_body_plus1 > 0 && f->frame_body_plus1 <= g.n)
+        pl__world_body_acceleration(w, f->frame_body_plus1 - 1, is_static ? g.time : f->out_time, &f->frame_acc);
     if (f->frame_acc.x != acc0.x || f->frame_acc.y != acc0.y) f->static_valid = 0;
     if (f->par.perm_mode == 2 && !f->perm_user)
-        return pl__error(w, PL_ERR_STATE,
+        return pl__world_error(w, PL_ERR_STATE,
                          "fluid: FLUID_PERM = 2 needs per-element permeabilities (fluid_set_element_permeability)");
     pl_fl_update_permeability(f);
     if (f->k_dirty) {
@@ -230,7 +248,7 @@ pl_status pl__fluid_update(pl_world *w, double dt, int is_static) {
         f->stats.t_assembly += pl_fl_now() - t0;
     }
     st = is_static ? pl_fl_solve_static(f) : pl_fl_advance(f, dt);
-    if (st != PL_OK) return pl__error(w, st, "%s", f->msg);
+    if (st != PL_OK) return pl__world_error(w, st, "%s", f->msg);
     pl_fl_update_gradients(f);
     f->stats.updates++;
     return write_outputs(w);
@@ -253,10 +271,10 @@ pl_fluid_quad_def pl_default_fluid_quad_def(void) {
 }
 
 int pl_world_add_fluid_quad(pl_world *w, const pl_fluid_quad_def *def) {
-    if (!def) return pl__error(w, PL_ERR_ARG, "add_fluid_quad: no definition given");
+    if (!def) return pl__world_error(w, PL_ERR_ARG, "add_fluid_quad: no definition given");
     struct pl_fluid *f = model(w);
-    if (!f) return pl__error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
-    pl_fl_quad q;
+    if (!f) return pl__world_error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
+    pl_mesh_quad q;
     for (int k = 0; k < 4; k++) q.c[k] = def->corners[k];
     q.ndivx = def->ndivx;
     q.ndivy = def->ndivy;
@@ -269,25 +287,25 @@ int pl_world_add_fluid_quad(pl_world *w, const pl_fluid_quad_def *def) {
     q.anisotropy = def->anisotropy;
     for (int k = 0; k < f->nq; k++)
         if (f->quads[k].id == q.id)
-            return pl__error(w, PL_ERR_ARG, "add_fluid_quad: id %d is already used by fluid quad %d", q.id, k);
+            return pl__world_error(w, PL_ERR_ARG, "add_fluid_quad: id %d is already used by fluid quad %d", q.id, k);
     /* validate this quad alone now so that the error names the call */
-    pl_fl_mesh tmp = {0};
+    pl_mesh tmp = {0};
     char msg[PL_FL_MSG];
-    pl_fl_quad one = q;
+    pl_mesh_quad one = q;
     if (q.ndivx >= 1 && q.ndivy >= 1 && q.ndivx <= 4096 && q.ndivy <= 4096) { one.ndivx = 1; one.ndivy = 1; }
-    pl_status st = pl_fl_mesh_build(&tmp, &one, 1, msg, sizeof msg);
-    pl_fl_mesh_free(&tmp);
+    pl_status st = pl_mesh_build(&tmp, &one, 1, msg, sizeof msg);
+    pl_mesh_free(&tmp);
     if (st != PL_OK) {
         /* report with the real index and divisions */
         if (q.ndivx < 1 || q.ndivy < 1 || q.ndivx > 4096 || q.ndivy > 4096)
-            return pl__error(w, PL_ERR_ARG, "add_fluid_quad (id %d): ndivx and ndivy must be 1..4096 (got %d, %d)",
+            return pl__world_error(w, PL_ERR_ARG, "add_fluid_quad (id %d): ndivx and ndivy must be 1..4096 (got %d, %d)",
                              q.id, q.ndivx, q.ndivy);
-        return pl__error(w, st, "add_fluid_quad: %s", msg);
+        return pl__world_error(w, st, "add_fluid_quad: %s", msg);
     }
     if (f->nq == f->qcap) {
         int nc = f->qcap ? 2 * f->qcap : 8;
-        pl_fl_quad *p = realloc(f->quads, sizeof(pl_fl_quad) * (size_t)nc);
-        if (!p) return pl__error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
+        pl_mesh_quad *p = realloc(f->quads, sizeof(pl_mesh_quad) * (size_t)nc);
+        if (!p) return pl__world_error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
         f->quads = p;
         f->qcap = nc;
     }
@@ -297,29 +315,29 @@ int pl_world_add_fluid_quad(pl_world *w, const pl_fluid_quad_def *def) {
 }
 
 pl_status pl_world_change_fluid_id(pl_world *w, int old_id, int new_id) {
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     int at = -1;
     for (int k = 0; f && k < f->nq; k++) {
         if (f->quads[k].id == new_id && new_id != old_id)
-            return pl__error(w, PL_ERR_ARG, "change_fluid_id: id %d is already used", new_id);
+            return pl__world_error(w, PL_ERR_ARG, "change_fluid_id: id %d is already used", new_id);
         if (f->quads[k].id == old_id) at = k;
     }
-    if (at < 0) return pl__error(w, PL_ERR_ARG, "change_fluid_id: no fluid quad has id %d", old_id);
+    if (at < 0) return pl__world_error(w, PL_ERR_ARG, "change_fluid_id: no fluid quad has id %d", old_id);
     f->quads[at].id = new_id;
     return PL_OK;
 }
 
-int pl_world_fluid_quad_count(const pl_world *w) { return w->fluid ? w->fluid->nq : 0; }
+int pl_world_fluid_quad_count(const pl_world *w) { return pl__darcy(w) ? pl__darcy(w)->nq : 0; }
 
 static int add_line(pl_world *w, pl_vec2 a, pl_vec2 b, double value, int kind, const char *fn) {
     if (!isfinite(a.x) || !isfinite(a.y) || !isfinite(b.x) || !isfinite(b.y) || !isfinite(value))
-        return pl__error(w, PL_ERR_ARG, "%s: coordinates and value must be finite", fn);
+        return pl__world_error(w, PL_ERR_ARG, "%s: coordinates and value must be finite", fn);
     struct pl_fluid *f = model(w);
-    if (!f) return pl__error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
+    if (!f) return pl__world_error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
     if (f->nl == f->lcap) {
         int nc = f->lcap ? 2 * f->lcap : 8;
         pl_fl_line *p = realloc(f->lines, sizeof(pl_fl_line) * (size_t)nc);
-        if (!p) return pl__error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
+        if (!p) return pl__world_error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
         f->lines = p;
         f->lcap = nc;
     }
@@ -337,54 +355,55 @@ int pl_world_add_fluid_flux(pl_world *w, pl_vec2 a, pl_vec2 b, double inflow) {
 }
 
 pl_status pl_world_clear_fluid_bcs(pl_world *w) {
-    if (!w->fluid) return PL_OK;
-    w->fluid->nl = 0;
-    w->fluid->bc_dirty = 1;
+    if (!pl__darcy(w)) return PL_OK;
+    pl__darcy(w)->nl = 0;
+    pl__darcy(w)->bc_dirty = 1;
     return PL_OK;
 }
 
 pl_status pl_world_fluid_solve_static(pl_world *w) {
-    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_solve_static: no fluid model (add a fluid quad first)");
+    if (!pl__darcy(w)) return pl__world_error(w, PL_ERR_STATE, "fluid_solve_static: no fluid model (add a fluid quad first)");
     pl_status st = pl__fluid_update(w, 0, 1);
     if (st == PL_OK) {
-        w->fluid->initialised = 1;
-        w->fluid->steps_since = 0;
-        w->fluid->time_since = 0;
+        pl__darcy(w)->initialised = 1;
+        pl__darcy(w)->steps_since = 0;
+        pl__darcy(w)->time_since = 0;
     }
     return st;
 }
 
 pl_status pl_world_fluid_advance(pl_world *w, double dt) {
-    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_advance: no fluid model (add a fluid quad first)");
-    if (!(dt > 0) || !isfinite(dt)) return pl__error(w, PL_ERR_ARG, "fluid_advance: dt must be > 0 (got %g)", dt);
+    if (!pl__darcy(w)) return pl__world_error(w, PL_ERR_STATE, "fluid_advance: no fluid model (add a fluid quad first)");
+    if (!(dt > 0) || !isfinite(dt)) return pl__world_error(w, PL_ERR_ARG, "fluid_advance: dt must be > 0 (got %g)", dt);
     pl_status st = pl__fluid_update(w, dt, 0);
-    if (st == PL_OK) w->fluid->initialised = 1;
+    if (st == PL_OK) pl__darcy(w)->initialised = 1;
     return st;
 }
 
 pl_status pl_world_fluid_set_frame(pl_world *w, int body) {
-    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_frame: no fluid model (add a fluid quad first)");
+    if (!pl__darcy(w)) return pl__world_error(w, PL_ERR_STATE, "fluid_frame: no fluid model (add a fluid quad first)");
     if (body < 0) {
-        w->fluid->frame_body_plus1 = 0;
+        pl__darcy(w)->frame_body_plus1 = 0;
         return PL_OK;
     }
-    if (body >= w->n) return pl__error(w, PL_ERR_ARG, "fluid_frame: no body %d (the world has %d)", body, w->n);
+    const int nb = pl__world_grains(w).n;
+    if (body >= nb) return pl__world_error(w, PL_ERR_ARG, "fluid_frame: no body %d (the world has %d)", body, nb);
     pl_vec2 a;
-    if (w->motion[body] != PL_MOTION_PRESCRIBED || !pl__law_acceleration(&w->law[body], w->time, &a))
-        return pl__error(w, PL_ERR_ARG,
+    if (!pl__world_body_acceleration(w, body, pl__world_time(w), &a))
+        return pl__world_error(w, PL_ERR_ARG,
                          "fluid_frame: body %d must move by a prescribed law with a known acceleration (shake, or a "
                          "constant velocity); give it its motion first",
                          body);
-    w->fluid->frame_body_plus1 = body + 1;
+    pl__darcy(w)->frame_body_plus1 = body + 1;
     return PL_OK;
 }
 
 pl_status pl_world_fluid_set_pressure_head(pl_world *w, double psi) {
-    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_set_pressure_head: no fluid model");
-    pl__fluid_read_params(w, &w->fluid->par);
+    if (!pl__darcy(w)) return pl__world_error(w, PL_ERR_STATE, "fluid_set_pressure_head: no fluid model");
+    pl__fluid_read_params(w, &pl__darcy(w)->par);
     pl_status st = ensure_built(w);
     if (st != PL_OK) return st;
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     for (int i = 0; i < f->mesh.nn; i++) f->head[i] = psi + pl_fl_z(f, f->mesh.xy[i]);
     pl_fl_apply_dirichlet(f, f->head);
     pl_fl_update_gradients(f);
@@ -394,19 +413,19 @@ pl_status pl_world_fluid_set_pressure_head(pl_world *w, double psi) {
 }
 
 pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, int count) {
-    if (!w->fluid) return pl__error(w, PL_ERR_STATE, "fluid_set_element_permeability: no fluid model");
-    pl__fluid_read_params(w, &w->fluid->par);
+    if (!pl__darcy(w)) return pl__world_error(w, PL_ERR_STATE, "fluid_set_element_permeability: no fluid model");
+    pl__fluid_read_params(w, &pl__darcy(w)->par);
     pl_status st = ensure_built(w);
     if (st != PL_OK) return st;
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     if (count != f->mesh.ne)
-        return pl__error(w, PL_ERR_ARG, "fluid_set_element_permeability: %d values given for %d triangles", count,
+        return pl__world_error(w, PL_ERR_ARG, "fluid_set_element_permeability: %d values given for %d triangles", count,
                          f->mesh.ne);
     for (int e = 0; e < count; e++)
         if (!(k[e] > 0) || !isfinite(k[e]))
-            return pl__error(w, PL_ERR_ARG, "fluid_set_element_permeability: value %d is %g; must be > 0", e, k[e]);
+            return pl__world_error(w, PL_ERR_ARG, "fluid_set_element_permeability: value %d is %g; must be > 0", e, k[e]);
     if (!f->perm_user) f->perm_user = malloc(sizeof(double) * (size_t)count);
-    if (!f->perm_user) return pl__error(w, PL_ERR_NOMEM, "fluid_set_element_permeability: out of memory");
+    if (!f->perm_user) return pl__world_error(w, PL_ERR_NOMEM, "fluid_set_element_permeability: out of memory");
     memcpy(f->perm_user, k, sizeof(double) * (size_t)count);
     return PL_OK;
 }
@@ -416,7 +435,7 @@ pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, 
 /* Queries see the field the first step will use: with FLUIDS_ON and FIRST_STEP_STATIC the
    static solution is computed on the first query (a frame at t = 0 shows it). */
 static struct pl_fluid *built(pl_world *w) {
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     if (!f) return NULL;
     if (f->mesh_dirty || f->bc_dirty) {
         /* a query must not change what the next step does: when it rebuilds changed boundary
@@ -427,7 +446,7 @@ static struct pl_fluid *built(pl_world *w) {
         if (ensure_built(w) != PL_OK) return NULL;
         if (bcs_only) f->refresh_pending = 1;
     }
-    if (!f->initialised && pl__fluid_flag(w, "FLUIDS_ON", 0) != 0 && pl__fluid_flag(w, "FIRST_STEP_STATIC", 0) != 0) {
+    if (!f->initialised && pl__world_flag_values(w, &pl_darcy_class)[0] != 0 && pl__world_flag_values(w, &pl_darcy_class)[1] != 0) {
         if (pl__fluid_update(w, 0, 1) != PL_OK) return f; /* message in last_error; field stays */
         f->initialised = 1;
         /* the stepping hook would have made this static solve at the first step and counted
@@ -535,9 +554,10 @@ double pl_world_fluid_line_inflow(pl_world *w, int line) {
 
 pl_status pl_world_fluid_body_force(pl_world *w, int body, pl_vec2 *force, double *moment) {
     struct pl_fluid *f = built(w);
-    if (!f) return pl__error(w, PL_ERR_STATE, "fluid_body_force: no fluid model");
-    if (body < 0 || body >= w->n)
-        return pl__error(w, PL_ERR_ARG, "fluid_body_force: body %d does not exist (0..%d)", body, w->n - 1);
+    if (!f) return pl__world_error(w, PL_ERR_STATE, "fluid_body_force: no fluid model");
+    const int nb = pl__world_grains(w).n;
+    if (body < 0 || body >= nb)
+        return pl__world_error(w, PL_ERR_ARG, "fluid_body_force: body %d does not exist (0..%d)", body, nb - 1);
     pl_fl_bodies b = pl__fluid_world_bodies(w);
     pl_vec2 F = {0, 0};
     double M = 0;
@@ -548,10 +568,10 @@ pl_status pl_world_fluid_body_force(pl_world *w, int body, pl_vec2 *force, doubl
 }
 
 pl_status pl_world_fluid_stats(const pl_world *w, pl_fluid_stats *out) {
-    if (!w->fluid) {
+    if (!pl__darcy(w)) {
         memset(out, 0, sizeof *out);
         return PL_ERR_STATE;
     }
-    *out = w->fluid->stats;
+    *out = pl__darcy(w)->stats;
     return PL_OK;
 }

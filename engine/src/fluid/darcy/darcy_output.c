@@ -1,23 +1,24 @@
 /* Output of the fluid field: VTK unstructured grid (.vtu, ASCII) and ParaView collection
  * (.pvd); the thesis's MATLAB-readable text files (Appendix B: FLUID_GEOMETRY_FILENAME,
  * FLUID_PRESSURES_FILENAME). */
-#include "dem/world_internal.h"
-#include "fluid/fluid_internal.h"
+#include "world/model.h"
+#include "fluid/darcy/darcy_internal.h"
+#include "fluid/darcy/darcy_world.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path) {
     int nn = pl_world_fluid_node_count(w), ne = pl_world_fluid_triangle_count(w);
-    if (nn <= 0) return pl__error(w, PL_ERR_STATE, "fluid_write_vtu: no fluid mesh");
-    struct pl_fluid *f = w->fluid;
+    if (nn <= 0) return pl__world_error(w, PL_ERR_STATE, "fluid_write_vtu: no fluid mesh");
+    struct pl_fluid *f = pl__darcy(w);
     FILE *fp = fopen(path, "w");
-    if (!fp) return pl__error(w, PL_ERR_IO, "fluid_write_vtu: cannot write '%s'", path);
+    if (!fp) return pl__world_error(w, PL_ERR_IO, "fluid_write_vtu: cannot write '%s'", path);
     double *buf = malloc(sizeof(double) * (size_t)(nn > ne ? nn : ne));
     double *buf2 = malloc(sizeof(double) * (size_t)ne);
     if (!buf || !buf2) {
         fclose(fp); free(buf); free(buf2);
-        return pl__error(w, PL_ERR_NOMEM, "fluid_write_vtu: out of memory");
+        return pl__world_error(w, PL_ERR_NOMEM, "fluid_write_vtu: out of memory");
     }
     fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
     fprintf(fp, "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n", nn, ne);
@@ -54,7 +55,7 @@ pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path) {
     }
     fprintf(fp, "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
     free(buf); free(buf2);
-    if (fclose(fp) != 0) return pl__error(w, PL_ERR_IO, "fluid_write_vtu: error writing '%s'", path);
+    if (fclose(fp) != 0) return pl__world_error(w, PL_ERR_IO, "fluid_write_vtu: error writing '%s'", path);
     return PL_OK;
 }
 
@@ -69,11 +70,11 @@ pl_status pl_fluid_write_pvd(const char *path, const char *const *files, const d
 }
 
 pl_status pl_world_fluid_set_output_file(pl_world *w, const char *which, const char *path) {
-    if (!which || !path || !path[0]) return pl__error(w, PL_ERR_ARG, "fluid_set_output_file: give which and a path");
-    struct pl_fluid *f = w->fluid;
-    if (!f) return pl__error(w, PL_ERR_STATE, "fluid_set_output_file: add a fluid quad first");
+    if (!which || !path || !path[0]) return pl__world_error(w, PL_ERR_ARG, "fluid_set_output_file: give which and a path");
+    struct pl_fluid *f = pl__darcy(w);
+    if (!f) return pl__world_error(w, PL_ERR_STATE, "fluid_set_output_file: add a fluid quad first");
     if (strlen(path) >= sizeof f->geometry_file)
-        return pl__error(w, PL_ERR_ARG, "fluid_set_output_file: path longer than %zu characters", sizeof f->geometry_file - 1);
+        return pl__world_error(w, PL_ERR_ARG, "fluid_set_output_file: path longer than %zu characters", sizeof f->geometry_file - 1);
     if (!strcmp(which, "geometry")) {
         snprintf(f->geometry_file, sizeof f->geometry_file, "%s", path);
         f->geometry_written = 0;
@@ -81,39 +82,40 @@ pl_status pl_world_fluid_set_output_file(pl_world *w, const char *which, const c
         snprintf(f->pressures_file, sizeof f->pressures_file, "%s", path);
         f->pressures_started = 0;
     } else
-        return pl__error(w, PL_ERR_ARG, "fluid_set_output_file: which must be 'geometry' or 'pressures' (got '%s')", which);
+        return pl__world_error(w, PL_ERR_ARG, "fluid_set_output_file: which must be 'geometry' or 'pressures' (got '%s')", which);
     return PL_OK;
 }
 
 pl_status pl_world_fluid_write_geometry(pl_world *w, const char *path) {
     int nn = pl_world_fluid_node_count(w);
-    if (nn <= 0) return pl__error(w, PL_ERR_STATE, "fluid_write_geometry: no fluid mesh");
-    struct pl_fluid *f = w->fluid;
+    if (nn <= 0) return pl__world_error(w, PL_ERR_STATE, "fluid_write_geometry: no fluid mesh");
+    struct pl_fluid *f = pl__darcy(w);
     FILE *fp = fopen(path, "w");
-    if (!fp) return pl__error(w, PL_ERR_IO, "fluid_write_geometry: cannot write '%s'", path);
+    if (!fp) return pl__world_error(w, PL_ERR_IO, "fluid_write_geometry: cannot write '%s'", path);
     fprintf(fp, "%% porelab fluid geometry: one row per node: x y (m); triangles in %s.tri\n", path);
     for (int i = 0; i < nn; i++) fprintf(fp, "%.17g %.17g\n", f->mesh.xy[i].x, f->mesh.xy[i].y);
-    if (fclose(fp) != 0) return pl__error(w, PL_ERR_IO, "fluid_write_geometry: error writing '%s'", path);
+    if (fclose(fp) != 0) return pl__world_error(w, PL_ERR_IO, "fluid_write_geometry: error writing '%s'", path);
     char tri[300];
     snprintf(tri, sizeof tri, "%s.tri", path);
     fp = fopen(tri, "w");
-    if (!fp) return pl__error(w, PL_ERR_IO, "fluid_write_geometry: cannot write '%s'", tri);
+    if (!fp) return pl__world_error(w, PL_ERR_IO, "fluid_write_geometry: cannot write '%s'", tri);
     fprintf(fp, "%% porelab fluid triangles: node numbers i j k (1-based, counter-clockwise)\n");
     for (int e = 0; e < f->mesh.ne; e++)
         fprintf(fp, "%d %d %d\n", f->mesh.tri[3 * e] + 1, f->mesh.tri[3 * e + 1] + 1, f->mesh.tri[3 * e + 2] + 1);
-    if (fclose(fp) != 0) return pl__error(w, PL_ERR_IO, "fluid_write_geometry: error writing '%s'", tri);
+    if (fclose(fp) != 0) return pl__world_error(w, PL_ERR_IO, "fluid_write_geometry: error writing '%s'", tri);
     return PL_OK;
 }
 
 pl_status pl_world_fluid_append_pressures(pl_world *w, const char *path) {
     int nn = pl_world_fluid_node_count(w);
-    if (nn <= 0) return pl__error(w, PL_ERR_STATE, "fluid_append_pressures: no fluid mesh");
-    struct pl_fluid *f = w->fluid;
+    if (nn <= 0) return pl__world_error(w, PL_ERR_STATE, "fluid_append_pressures: no fluid mesh");
+    struct pl_fluid *f = pl__darcy(w);
     FILE *fp = fopen(path, "a");
-    if (!fp) return pl__error(w, PL_ERR_IO, "fluid_append_pressures: cannot write '%s'", path);
-    fprintf(fp, "%.10g", f->out_time > w->time ? f->out_time : w->time);
+    if (!fp) return pl__world_error(w, PL_ERR_IO, "fluid_append_pressures: cannot write '%s'", path);
+    const double t = pl__world_time(w);
+    fprintf(fp, "%.10g", f->out_time > t ? f->out_time : t);
     for (int i = 0; i < nn; i++) fprintf(fp, " %.10g", f->head[i] - pl_fl_z(f, f->mesh.xy[i]));
     fprintf(fp, "\n");
-    if (fclose(fp) != 0) return pl__error(w, PL_ERR_IO, "fluid_append_pressures: error writing '%s'", path);
+    if (fclose(fp) != 0) return pl__world_error(w, PL_ERR_IO, "fluid_append_pressures: error writing '%s'", path);
     return PL_OK;
 }

@@ -4,7 +4,7 @@
  * nodes are merged and triangles with foreign nodes on a face are re-meshed into a fan (§3.5.2,
  * Fig. 3-4), the foreign nodes found by a range search over a uniform grid of nodes and ordered
  * by their distance along the face. */
-#include "fluid/fluid_internal.h"
+#include "mesh/mesh.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,7 +17,7 @@ static double cross3(pl_vec2 a, pl_vec2 b, pl_vec2 c) {
 }
 
 /* Validates a quad: counter-clockwise, convex, not degenerate. */
-static pl_status check_quad(const pl_fl_quad *q, int index, char *msg, int msglen) {
+static pl_status check_quad(const pl_mesh_quad *q, int index, char *msg, int msglen) {
     int pos = 0, neg = 0;
     double size = 0;
     for (int i = 0; i < 4; i++) {
@@ -63,7 +63,7 @@ static pl_status check_quad(const pl_fl_quad *q, int index, char *msg, int msgle
 }
 
 /* Bilinear map of eqs. 3.6-3.7. */
-static pl_vec2 map_st(const pl_fl_quad *q, double s, double t) {
+static pl_vec2 map_st(const pl_mesh_quad *q, double s, double t) {
     double h1 = 0.25 * (1 - s) * (1 - t), h2 = 0.25 * (1 + s) * (1 - t);
     double h3 = 0.25 * (1 + s) * (1 + t), h4 = 0.25 * (1 - s) * (1 + t);
     pl_vec2 p;
@@ -200,15 +200,15 @@ static int cmp_edge(const void *x, const void *y) {
     return (p->tri > q->tri) - (p->tri < q->tri);
 }
 
-void pl_fl_mesh_free(pl_fl_mesh *m) {
+void pl_mesh_free(pl_mesh *m) {
     free(m->xy); free(m->tri); free(m->tri_quad); free(m->area); free(m->bc);
     free(m->cell_start); free(m->cell_items); free(m->bedge);
     free(m->tri_box); free(m->tri_cell0); free(m->edge_ang); free(m->edge_len);
     memset(m, 0, sizeof *m);
 }
 
-pl_status pl_fl_mesh_build(pl_fl_mesh *m, const pl_fl_quad *quads, int nq, char *msg, int msglen) {
-    pl_fl_mesh_free(m);
+pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg, int msglen) {
+    pl_mesh_free(m);
     if (nq <= 0) {
         snprintf(msg, msglen, "fluid: no fluid quad defined (add one with add_fluid_quad / add_fluid_mesh_ui)");
         return PL_ERR_STATE;
@@ -236,7 +236,7 @@ pl_status pl_fl_mesh_build(pl_fl_mesh *m, const pl_fl_quad *quads, int nq, char 
     /* 1. mesh each quad */
     int nn = 0;
     for (int q = 0; q < nq; q++) {
-        const pl_fl_quad *Q = &quads[q];
+        const pl_mesh_quad *Q = &quads[q];
         int nx = Q->ndivx, ny = Q->ndivy, base = nn;
         for (int j = 0; j <= ny; j++)
             for (int i = 0; i <= nx; i++) xy[nn++] = map_st(Q, -1 + 2.0 * i / nx, -1 + 2.0 * j / ny);
@@ -404,7 +404,7 @@ pl_status pl_fl_mesh_build(pl_fl_mesh *m, const pl_fl_quad *quads, int nq, char 
         }
         i = j;
     }
-    status = pl_fl_mesh_build_grid(m);
+    status = pl_mesh_build_grid(m);
     if (status != PL_OK) goto fail;
     /* overlapping quads: a node strictly inside a triangle it does not belong to */
     for (int i = 0; i < m->nn; i++) {
@@ -418,7 +418,7 @@ pl_status pl_fl_mesh_build(pl_fl_mesh *m, const pl_fl_quad *quads, int nq, char 
             const int32_t *v = &m->tri[3 * e];
             if (v[0] == i || v[1] == i || v[2] == i) continue;
             double l[3];
-            pl_fl_barycentric(m, e, p, l);
+            pl_mesh_barycentric(m, e, p, l);
             if (l[0] > 1e-9 && l[1] > 1e-9 && l[2] > 1e-9) {
                 snprintf(msg, msglen, "fluid mesh: fluid quads %d (id %d) and another overlap: node at (%g, %g) lies inside a triangle of quad %d",
                          m->tri_quad[e], quads[m->tri_quad[e]].id, p.x, p.y, m->tri_quad[e]);
@@ -434,13 +434,13 @@ fail:
     if (status == PL_ERR_NOMEM) snprintf(msg, msglen, "fluid mesh: out of memory");
     free(xy); free(tl.v); free(tl.q); free(rep); free(order); free(newid); free(hbuf); free(edges);
     pgrid_free(&pg);
-    pl_fl_mesh_free(m);
+    pl_mesh_free(m);
     return status;
 }
 
 /* ---------------------------------------------------------- point location */
 
-pl_status pl_fl_mesh_build_grid(pl_fl_mesh *m) {
+pl_status pl_mesh_build_grid(pl_mesh *m) {
     free(m->cell_start); free(m->cell_items);
     m->cell_start = NULL; m->cell_items = NULL;
     double w = m->hi.x - m->lo.x, h = m->hi.y - m->lo.y;
@@ -470,7 +470,7 @@ pl_status pl_fl_mesh_build_grid(pl_fl_mesh *m) {
             pl_vec2 lo = {fmin(a.x, fmin(b.x, c.x)), fmin(a.y, fmin(b.y, c.y))};
             pl_vec2 hi = {fmax(a.x, fmax(b.x, c.x)), fmax(a.y, fmax(b.y, c.y))};
             int i0, j0, i1, j1;
-            pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1);
+            pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1);
             for (int j = j0; j <= j1; j++)
                 for (int i = i0; i <= i1; i++) {
                     size_t cidx = (size_t)j * m->gx + i;
@@ -498,7 +498,7 @@ pl_status pl_fl_mesh_build_grid(pl_fl_mesh *m) {
         m->tri_box[4 * e + 2] = hi.x;
         m->tri_box[4 * e + 3] = hi.y;
         int i0, j0, i1, j1;
-        pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1);
+        pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1);
         m->tri_cell0[2 * e] = i0;
         m->tri_cell0[2 * e + 1] = j0;
         for (int k = 0; k < 3; k++) {
@@ -511,7 +511,7 @@ pl_status pl_fl_mesh_build_grid(pl_fl_mesh *m) {
     return PL_OK;
 }
 
-int pl_fl_grid_range(const pl_fl_mesh *m, pl_vec2 lo, pl_vec2 hi, int *i0, int *j0, int *i1, int *j1) {
+int pl_mesh_grid_range(const pl_mesh *m, pl_vec2 lo, pl_vec2 hi, int *i0, int *j0, int *i1, int *j1) {
     double eps = 1e-9 * m->scale;
     if (hi.x < m->lo.x - eps || hi.y < m->lo.y - eps || lo.x > m->hi.x + eps || lo.y > m->hi.y + eps) {
         *i0 = *j0 = 0;
@@ -527,7 +527,7 @@ int pl_fl_grid_range(const pl_fl_mesh *m, pl_vec2 lo, pl_vec2 hi, int *i0, int *
     return 1;
 }
 
-void pl_fl_barycentric(const pl_fl_mesh *m, int e, pl_vec2 p, double l[3]) {
+void pl_mesh_barycentric(const pl_mesh *m, int e, pl_vec2 p, double l[3]) {
     /* shape functions of eqs. 3.22-3.23: h = (a + b x + c y) / (2A), written relative to
        node k for accuracy */
     const int32_t *v = &m->tri[3 * e];
@@ -538,7 +538,7 @@ void pl_fl_barycentric(const pl_fl_mesh *m, int e, pl_vec2 p, double l[3]) {
     l[2] = 1 - l[0] - l[1];
 }
 
-int pl_fl_locate(const pl_fl_mesh *m, pl_vec2 p) {
+int pl_mesh_locate(const pl_mesh *m, pl_vec2 p) {
     if (!m->cell_start) return -1;
     double eps = 1e-9 * m->scale;
     if (p.x < m->lo.x - eps || p.y < m->lo.y - eps || p.x > m->hi.x + eps || p.y > m->hi.y + eps) return -1;
@@ -553,7 +553,7 @@ int pl_fl_locate(const pl_fl_mesh *m, pl_vec2 p) {
     for (int k = m->cell_start[c]; k < m->cell_start[c + 1]; k++) {
         int e = m->cell_items[k];
         double l[3];
-        pl_fl_barycentric(m, e, p, l);
+        pl_mesh_barycentric(m, e, p, l);
         double mn = fmin(l[0], fmin(l[1], l[2]));
         if (mn >= 0) return e;
         if (mn > bestmin) { bestmin = mn; best = e; }

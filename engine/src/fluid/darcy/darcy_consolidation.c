@@ -22,7 +22,7 @@
  * skeleton does not cross the mesh boundary (walls), and where it leaves the porous region
  * (pure-fluid elements) vbar is its own and the mixture flux stays continuous. Summed over all
  * nodes the source vanishes (sum_i grad N_i = 0): the model conserves the mixture's volume. */
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,7 +55,7 @@ pl_status pl_fl_consolidation_alloc(struct pl_fluid *f) {
     for (int e = 0; e < f->mesh.ne; e++) f->stor_assembled[e] = -1;
     /* boundary edges of each element (an oriented boundary edge a->b belongs to the element
        that has a->b among its counter-clockwise edges); found once per mesh */
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     for (int k = 0; k < 3 * m->ne; k++) f->elem_bedge[k] = -1;
     for (int e = 0; e < m->ne; e++) {
         const int32_t *v = &m->tri[3 * e];
@@ -186,7 +186,7 @@ static double chord_poly(pl_vec2 a, pl_vec2 b, const pl_vec2 *v, int n) {
 
 pl_status pl_fl_consolidation_source(struct pl_fluid *f, const pl_fl_bodies *b, const double *angle, double dt) {
     double t0 = pl_fl_now();
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     const int nn = m->nn;
     pl_status st = ensure_ref(f, b->n);
     if (st != PL_OK) return st;

@@ -1,10 +1,11 @@
-/* Helpers shared by fluid_world.c (API) and fluid_hook.c (stepping). */
+/* Helpers shared by darcy_world.c (API) and darcy_model.c (stepping). */
 #ifndef PL_FLUID_WORLD_H
 #define PL_FLUID_WORLD_H
-#include "dem/world_internal.h"
-#include "fluid/fluid_internal.h"
+#include "world/model.h"
+#include "fluid/darcy/darcy_internal.h"
 
-double pl__fluid_flag(const pl_world *w, const char *name, double def);
+/* The world's Darcy model, or NULL. */
+static inline struct pl_fluid *pl__darcy(const pl_world *w) { return (struct pl_fluid *)pl__world_model(w, &pl_darcy_class); }
 void pl__fluid_read_params(pl_world *w, pl_fl_params *p);
 pl_fl_bodies pl__fluid_world_bodies(const pl_world *w);
 /* One fluid update: porosity, permeability, assembly, solve (static when is_static). */

@@ -1,9 +1,9 @@
 /* Saturated-soil diagnostics (porelab/soil.h, docs/soil.md §3): effective stress from the
  * contacts, pore and excess pore pressure averaged over a region, total stress, and access to
  * the consolidation source. */
-#include "dem/world_internal.h"
-#include "fluid/fluid_internal.h"
-#include "fluid/fluid_world.h"
+#include "world/model.h"
+#include "fluid/darcy/darcy_internal.h"
+#include "fluid/darcy/darcy_world.h"
 #include "porelab/soil.h"
 #include <math.h>
 #include <string.h>
@@ -52,12 +52,12 @@ pl_status pl_world_soil_region(pl_world *w, pl_vec2 lo, pl_vec2 hi, pl_soil_regi
     if (!w || !out) return PL_ERR_ARG;
     memset(out, 0, sizeof *out);
     if (!(hi.x > lo.x && hi.y > lo.y))
-        return pl__error(w, PL_ERR_ARG, "soil_region: hi must lie above and right of lo (got lo = (%g, %g), hi = (%g, %g))",
+        return pl__world_error(w, PL_ERR_ARG, "soil_region: hi must lie above and right of lo (got lo = (%g, %g), hi = (%g, %g))",
                          lo.x, lo.y, hi.x, hi.y);
     out->bodies = pl_world_stress_in_region(w, lo, hi, out->eff);
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     if (f && f->built && f->head) {
-        const pl_fl_mesh *m = &f->mesh;
+        const pl_mesh *m = &f->mesh;
         double href = 0;
         int nref = 0;
         for (int i = 0; i < m->nn; i++)
@@ -86,19 +86,20 @@ pl_status pl_world_soil_region(pl_world *w, pl_vec2 lo, pl_vec2 hi, pl_soil_regi
     /* geostatic overburden: a body at elevation y (along -gravity) above lo weighs on every
        level between lo and y, so its share of the mean over the region's height H is
        clamp((y - lo) / H, 0, 1) of its submerged weight, over the column width W */
-    const double gm = -w->def.gravity.y;
-    if (w->def.gravity.x == 0 && gm > 0) { /* defined for gravity along -y only */
+    const pl_grain_view g = pl__world_grains(w);
+    const double gm = -g.gravity.y;
+    if (g.gravity.x == 0 && gm > 0) { /* defined for gravity along -y only */
         const double rho_f = f && f->built && f->head ? f->par.density : 0;
         const double H = hi.y - lo.y, W = hi.x - lo.x;
         double s = 0;
-        for (int i = 0; i < w->n; i++) {
-            if (w->motion[i] != PL_MOTION_DYNAMIC) continue;
-            const pl_vec2 c = w->pos[i];
+        for (int i = 0; i < g.n; i++) {
+            if (g.motion[i] != PL_MOTION_DYNAMIC) continue;
+            const pl_vec2 c = g.pos[i];
             if (c.x < lo.x || c.x > hi.x || c.y <= lo.y) continue;
-            double wt = w->mass[i] * gm;
+            double wt = g.mass[i] * gm;
             if (rho_f > 0) {
                 double p, h;
-                if (pl_fl_pressure_at(f, c, &p, &h) >= 0 && p > 0) wt -= rho_f * gm * w->area[i];
+                if (pl_fl_pressure_at(f, c, &p, &h) >= 0 && p > 0) wt -= rho_f * gm * g.area[i];
             }
             const double fr = (c.y - lo.y) / H;
             s += wt * (fr < 1 ? fr : 1);
@@ -112,23 +113,23 @@ pl_status pl_world_soil_region(pl_world *w, pl_vec2 lo, pl_vec2 hi, pl_soil_regi
 }
 
 pl_status pl_world_soil_reset(pl_world *w) {
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     if (!f) return PL_OK;
     pl_fl_bodies b = pl__fluid_world_bodies(w);
-    pl_status st = pl_fl_consolidation_reset(f, &b, w->angle);
-    if (st != PL_OK) return pl__error(w, st, "soil_reset: out of memory");
+    pl_status st = pl_fl_consolidation_reset(f, &b, pl__world_grains(w).angle);
+    if (st != PL_OK) return pl__world_error(w, st, "soil_reset: out of memory");
     return PL_OK;
 }
 
 pl_status pl_world_soil_stats(const pl_world *w, double *t_source, double *last_source_abs) {
-    const struct pl_fluid *f = w->fluid;
+    const struct pl_fluid *f = pl__darcy(w);
     if (t_source) *t_source = f ? f->t_source : 0;
     if (last_source_abs) *last_source_abs = f ? f->last_src_abs : 0;
     return PL_OK;
 }
 
 int pl_world_soil_copy_source(pl_world *w, double *out, int cap) {
-    struct pl_fluid *f = w->fluid;
+    struct pl_fluid *f = pl__darcy(w);
     if (!f || !f->src || !f->built) return 0;
     int n = f->mesh.nn < cap ? f->mesh.nn : cap;
     memcpy(out, f->src, sizeof(double) * (size_t)n);

@@ -9,7 +9,7 @@
  * (DESIGN §3): each grain receives e (its solid area in the element) (-grad p_excess) per
  * element it covers, e the element's areal void ratio, so that the whole seepage force acts on
  * the skeleton. */
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdlib.h>
 
@@ -21,7 +21,7 @@ static int cmp_d(const void *a, const void *b) {
 }
 
 /* Parameters s (0..1 along a->b) where the segment enters/leaves triangle e (Cyrus-Beck). */
-static int clip_segment(const pl_fl_mesh *m, int e, pl_vec2 a, pl_vec2 d, double *s0, double *s1) {
+static int clip_segment(const pl_mesh *m, int e, pl_vec2 a, pl_vec2 d, double *s0, double *s1) {
     const int32_t *v = &m->tri[3 * e];
     double lo = 0, hi = 1;
     for (int k = 0; k < 3; k++) {
@@ -47,7 +47,7 @@ static int clip_segment(const pl_fl_mesh *m, int e, pl_vec2 a, pl_vec2 d, double
 /* Pressure at a point using element e's linear field (extrapolates slightly outside e). */
 static double p_in(const struct pl_fluid *f, int e, pl_vec2 p) {
     double l[3];
-    pl_fl_barycentric(&f->mesh, e, p, l);
+    pl_mesh_barycentric(&f->mesh, e, p, l);
     const int32_t *v = &f->mesh.tri[3 * e];
     double h = l[0] * f->head[v[0]] + l[1] * f->head[v[1]] + l[2] * f->head[v[2]];
     return f->par.density * f->par.g * (h - pl_fl_z(f, p));
@@ -68,12 +68,12 @@ static void piece(pl_vec2 a, pl_vec2 d, pl_vec2 c, double u0, double u1, double 
 
 static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c, double u0, double u1, pl_vec2 *F,
                        double *M, int depth) {
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     pl_vec2 d = {b.x - a.x, b.y - a.y};
     pl_vec2 pa = {a.x + u0 * d.x, a.y + u0 * d.y}, pb = {a.x + u1 * d.x, a.y + u1 * d.y};
     pl_vec2 lo = {fmin(pa.x, pb.x), fmin(pa.y, pb.y)}, hi = {fmax(pa.x, pb.x), fmax(pa.y, pb.y)};
     int i0, j0, i1, j1;
-    if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
+    if (!pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
     double bp[BP_CAP];
     int nb = 0, overflow = 0;
     bp[nb++] = u0;
@@ -103,7 +103,7 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
         double s0 = bp[k], s1 = bp[k + 1];
         if (s1 - s0 <= tiny) continue;
         double sm = 0.5 * (s0 + s1);
-        int e = pl_fl_locate(m, (pl_vec2){a.x + sm * d.x, a.y + sm * d.y});
+        int e = pl_mesh_locate(m, (pl_vec2){a.x + sm * d.x, a.y + sm * d.y});
         if (e < 0) continue; /* outside the fluid: p = 0 */
         double p0 = p_in(f, e, (pl_vec2){a.x + s0 * d.x, a.y + s0 * d.y});
         double p1 = p_in(f, e, (pl_vec2){a.x + s1 * d.x, a.y + s1 * d.y});
@@ -187,7 +187,7 @@ static void arc_force(double r, double al, double be, double ga, double a0, doub
    arc interval of the angle; returns the number of arcs (at most 3) written to arcs. The
    signed distances of the centre to the three edges are taken first, so that a circle wholly
    outside one edge costs no trigonometry; edge angles and lengths are the mesh's (built once). */
-static int circle_in_triangle(const pl_fl_mesh *m, int e, pl_vec2 c, double r, double arcs[][2]) {
+static int circle_in_triangle(const pl_mesh *m, int e, pl_vec2 c, double r, double arcs[][2]) {
     const int32_t *v = &m->tri[3 * e];
     const double *L3 = &m->edge_len[3 * e];
     double sk[3];
@@ -229,13 +229,13 @@ static int circle_in_triangle(const pl_fl_mesh *m, int e, pl_vec2 c, double r, d
 }
 
 void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *force) {
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     pl_vec2 lo = {c.x - r, c.y - r}, hi = {c.x + r, c.y + r};
     int i0, j0, i1, j1;
-    if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
+    if (!pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return;
     double Fx = 0, Fy = 0;
     /* common case: the whole circle inside the element holding its centre */
-    int ec = pl_fl_locate(m, c);
+    int ec = pl_mesh_locate(m, c);
     if (ec >= 0) {
         const int32_t *v = &m->tri[3 * ec];
         int inside = 1;

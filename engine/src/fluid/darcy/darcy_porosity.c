@@ -4,7 +4,7 @@
  * the element and the grains, union of grains, resolution settable). The void ratio
  * e = (A - A_s) / A_s (eq. 3.9) is clamped to 0.01..99 and mapped to a conductivity by
  * Kozeny-Carman e^3 / (1 + e) (eq. 3.8) between FLUID_PERM_LOW and FLUID_PERM_HIGH. */
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -126,7 +126,7 @@ static int push_cover(struct pl_fluid *f, int body, int elem, double area) {
 
 /* Pixel solid areas for the candidate pairs of one element (union of grains). */
 static void pixel_element(struct pl_fluid *f, const pl_fl_bodies *b, int e, int c0, int c1, int32_t *pair_of) {
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     const int32_t *v = &m->tri[3 * e];
     pl_vec2 t0 = m->xy[v[0]], t1 = m->xy[v[1]], t2 = m->xy[v[2]];
     double lx = fmin(t0.x, fmin(t1.x, t2.x)), hx = fmax(t0.x, fmax(t1.x, t2.x));
@@ -140,7 +140,7 @@ static void pixel_element(struct pl_fluid *f, const pl_fl_bodies *b, int e, int 
         for (int i = 0; i < nx; i++) {
             pl_vec2 p = {lx + (i + 0.5) * side, ly + (j + 0.5) * side};
             double l[3];
-            pl_fl_barycentric(m, e, p, l);
+            pl_mesh_barycentric(m, e, p, l);
             if (l[0] < 0 || l[1] < 0 || l[2] < 0) continue;
             in_tri++;
             int hit = 0;
@@ -161,7 +161,7 @@ static void pixel_element(struct pl_fluid *f, const pl_fl_bodies *b, int e, int 
 }
 
 pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     double t0 = pl_fl_now();
     memset(f->solid, 0, sizeof(double) * (size_t)m->ne);
     f->ncover = 0;
@@ -195,7 +195,7 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
             }
         }
         int i0, j0, i1, j1;
-        if (!pl_fl_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) continue;
+        if (!pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) continue;
         if (f->stamp_gen >= 2000000000) {
             memset(f->stamp, 0, sizeof(int32_t) * (size_t)m->ne);
             f->stamp_gen = 0;

@@ -1,6 +1,7 @@
-/* The world facade: creation, errors, the step loop and simple queries. */
-#include "dem/world_internal.h"
-#include "fluid/fluid_hook.h"
+/* The world facade: creation, errors, the step loop and simple queries. One step: neighbour
+ * list, contact forces, the attached models (advance, loads into the external-force column),
+ * motion laws, integration, guards (DESIGN §2). */
+#include "world/world_layer.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -52,7 +53,8 @@ pl_world *pl_world_create(const pl_world_def *def) {
 void pl_world_destroy(pl_world **wp) {
     if (!wp || !*wp) return;
     pl_world *w = *wp;
-    if (w->fluid) pl__fluid_free(w->fluid);
+    pl__models_destroy(w);
+    free(w->ext_force); free(w->ext_moment); free(w->wants_load);
     free(w->materials);
     free(w->pair_params);
     free(w->pair_overrides);
@@ -117,10 +119,8 @@ pl_status pl_world_step(pl_world *w, int nsteps) {
             w->torque[i] = w->load_moment[i];
         }
         pl__compute_contact_forces(w, dt);
-        if (w->fluid) {
-            st = pl__fluid_step(w, dt);
-            if (st != PL_OK) return st;
-        }
+        st = pl__models_step(w, dt);
+        if (st != PL_OK) return st;
         pl__apply_motion_laws(w, w->time, dt);
         pl__integrate(w, dt);
         w->time += dt;

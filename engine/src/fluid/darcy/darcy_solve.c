@@ -4,7 +4,7 @@
  * explicit update (§3.9.2, eq. 3.18) with a lumped storage matrix, sub-stepped to stay below its
  * stability limit 2 / lambda_max(M^-1 K) (bounded with Gershgorin circles). */
 #define _POSIX_C_SOURCE 200809L
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -29,9 +29,9 @@
  *   scratch, live:     stamp/stamp_gen (only equality with the current generation matters),
  *                      pix_*, vbar, bchord, sys.work, sys.rhs/sol/wy/we, msg, capacities
  */
-#include "fluid/fluid_snapshot.h"
-#include "fluid/fluid_internal.h"
-#include "fluid/fluid_world.h"
+#include "fluid/darcy/darcy_snapshot.h"
+#include "fluid/darcy/darcy_internal.h"
+#include "fluid/darcy/darcy_world.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,7 +64,7 @@ struct pl_fl_snapshot {
     int ref_n, fcache_n;
     int has_perm_user, has_cons;
     /* arrays */
-    pl_fl_quad *quads;
+    pl_mesh_quad *quads;
     pl_fl_line *lines;
     double *head, *head_prev, *perm, *perm_user, *perm_assembled, *solid, *voidr, *porosity, *grad;
     double *kval, *mval, *mlump;
@@ -107,7 +107,7 @@ pl_fl_snapshot *pl__fluid_snapshot(const struct pl_fluid *f, size_t *bytes) {
     int fail = 0;
     z->nq = f->nq;
     z->nl = f->nl;
-    z->quads = dup(f->quads, sizeof(pl_fl_quad) * (size_t)f->nq, &b, &fail);
+    z->quads = dup(f->quads, sizeof(pl_mesh_quad) * (size_t)f->nq, &b, &fail);
     z->lines = dup(f->lines, sizeof(pl_fl_line) * (size_t)f->nl, &b, &fail);
     z->mesh_dirty = f->mesh_dirty;
     z->bc_dirty = f->bc_dirty;
@@ -180,7 +180,7 @@ static int grow(void **p, int *cap, int need, size_t elem) {
 static int same_quads(const struct pl_fluid *f, const pl_fl_snapshot *z) {
     if (f->nq != z->nq) return 0;
     for (int k = 0; k < f->nq; k++) {
-        const pl_fl_quad *a = &f->quads[k], *b = &z->quads[k];
+        const pl_mesh_quad *a = &f->quads[k], *b = &z->quads[k];
         if (a->ndivx != b->ndivx || a->ndivy != b->ndivy) return 0;
         for (int c = 0; c < 4; c++)
             if (a->c[c].x != b->c[c].x || a->c[c].y != b->c[c].y) return 0;
@@ -205,15 +205,7 @@ static int same_lines(const struct pl_fluid *f, const pl_fl_snapshot *z) {
         if ((n) > 0) memcpy((dst), (src), sizeof(*(dst)) * (size_t)(n));    \
     } while (0)
 
-pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
-    struct pl_fluid *f = w->fluid;
-    if (!f) { /* removed by restoring an earlier snapshot taken before the first fluid quad */
-        f = calloc(1, sizeof *f);
-        if (!f) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
-        f->mesh_dirty = 1;
-        f->par = pl_fl_default_params();
-        w->fluid = f;
-    }
+pl_status pl__fluid_restore(pl_world *w, struct pl_fluid *f, const pl_fl_snapshot *z) {
     const int valid = z->nn > 0;
     const int live_mesh = f->built && !f->mesh_dirty && f->head && f->sys.kval;
     const int keep_mesh = valid && live_mesh && same_quads(f, z);
@@ -221,7 +213,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
     /* input: quads and lines */
     if (!grow((void **)&f->quads, &f->qcap, z->nq, sizeof *f->quads) ||
         !grow((void **)&f->lines, &f->lcap, z->nl, sizeof *f->lines))
-        return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+        return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
     COPY(f->quads, z->quads, z->nq);
     f->nq = z->nq;
     COPY(f->lines, z->lines, z->nl);
@@ -235,7 +227,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
             if (st != PL_OK) return st;
         }
         if (f->mesh.nn != z->nn || f->mesh.ne != z->ne || f->sys.nnz != z->nnz)
-            return pl__error(w, PL_ERR_STATE, "restore: the fluid mesh (%d nodes, %d triangles) does not match the "
+            return pl__world_error(w, PL_ERR_STATE, "restore: the fluid mesh (%d nodes, %d triangles) does not match the "
                                               "snapshot's (%d nodes, %d triangles)",
                              f->mesh.nn, f->mesh.ne, z->nn, z->ne);
         const int nn = z->nn, ne = z->ne;
@@ -249,7 +241,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
         COPY(f->grad, z->grad, 2 * ne);
         if (z->has_perm_user) {
             if (!f->perm_user) f->perm_user = malloc(sizeof(double) * (size_t)ne);
-            if (!f->perm_user) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+            if (!f->perm_user) return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
             COPY(f->perm_user, z->perm_user, ne);
         } else {
             free(f->perm_user);
@@ -262,7 +254,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
            presence alone changes the assembly (storage per element) */
         if (z->has_cons) {
             if (!f->src && pl_fl_consolidation_alloc(f) != PL_OK)
-                return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+                return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
             COPY(f->src, z->src, nn);
             COPY(f->stor, z->stor, ne);
             COPY(f->stor_assembled, z->stor_assembled, ne);
@@ -270,7 +262,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
             pl_fl_consolidation_free(f);
         }
         if (!grow((void **)&f->cover, &f->cover_cap, z->ncover, sizeof *f->cover))
-            return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+            return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
         COPY(f->cover, z->cover, z->ncover);
         f->ncover = z->ncover;
         if (z->has_cover_start) {
@@ -280,7 +272,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
                 if (p) f->body_cover_start = p;
                 double *q = realloc(f->cover_xyr, sizeof(double) * 3 * (size_t)nc);
                 if (q) f->cover_xyr = q;
-                if (!p || !q) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+                if (!p || !q) return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
                 f->body_cap = nc;
             }
             COPY(f->body_cover_start, z->body_cover_start, z->cover_bodies + 1);
@@ -301,7 +293,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
             if (p) f->ref_pos = p;
             double *a = realloc(f->ref_ang, sizeof(double) * (size_t)nc);
             if (a) f->ref_ang = a;
-            if (!p || !a) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+            if (!p || !a) return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
             f->ref_cap = nc;
         }
         COPY(f->ref_pos, z->ref_pos, z->ref_n);
@@ -310,7 +302,7 @@ pl_status pl__fluid_restore(pl_world *w, const pl_fl_snapshot *z) {
     f->ref_n = z->ref_n;
     if (z->fcache_n > 0) {
         if (!grow((void **)&f->fcache, &f->fcache_cap, z->fcache_n, 3 * sizeof *f->fcache))
-            return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
+            return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
         COPY(f->fcache, z->fcache, 3 * z->fcache_n);
     }
     f->fcache_n = z->fcache_n;

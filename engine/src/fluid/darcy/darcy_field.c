@@ -2,7 +2,7 @@
  * Darcy velocities per element (eq. 3.19, exact for linear elements instead of the finite
  * differences of eq. 3.20), and interpolation at any point (eqs. 3.21-3.23) through the
  * point-location grid (§3.13.1). */
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 
 double pl_fl_z(const struct pl_fluid *f, pl_vec2 p) {
@@ -15,7 +15,7 @@ double pl_fl_node_pressure(const struct pl_fluid *f, int node) {
 }
 
 void pl_fl_update_gradients(struct pl_fluid *f) {
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     for (int e = 0; e < m->ne; e++) {
         const int32_t *v = &m->tri[3 * e];
         const double *bc = &m->bc[6 * e];
@@ -27,14 +27,14 @@ void pl_fl_update_gradients(struct pl_fluid *f) {
 }
 
 int pl_fl_pressure_at(const struct pl_fluid *f, pl_vec2 p, double *pressure, double *head) {
-    int e = pl_fl_locate(&f->mesh, p);
+    int e = pl_mesh_locate(&f->mesh, p);
     if (e < 0) {
         if (pressure) *pressure = 0;
         if (head) *head = NAN;
         return -1;
     }
     double l[3];
-    pl_fl_barycentric(&f->mesh, e, p, l);
+    pl_mesh_barycentric(&f->mesh, e, p, l);
     const int32_t *v = &f->mesh.tri[3 * e];
     double h = l[0] * f->head[v[0]] + l[1] * f->head[v[1]] + l[2] * f->head[v[2]];
     if (head) *head = h;

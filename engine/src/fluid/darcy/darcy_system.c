@@ -3,7 +3,7 @@
  * scattered into it, and the reduced SPD matrix of the free nodes (prescribed heads eliminated
  * symmetrically, eq. 3.16) handed to CHOLMOD, whose symbolic analysis is kept while the mesh
  * and the set of prescribed nodes do not change. */
-#include "fluid/fluid_internal.h"
+#include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,7 +46,7 @@ static int find_entry(const pl_fl_system *s, int col, int row) {
 /* Pattern of the full matrix (depends on the mesh only). */
 static pl_status build_pattern(struct pl_fluid *f) {
     pl_fl_system *s = &f->sys;
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     size_t n9 = 9 * (size_t)m->ne;
     ij *pairs = malloc(sizeof(ij) * n9);
     if (!pairs) return PL_ERR_NOMEM;
@@ -95,7 +95,7 @@ static double seg_dist(pl_vec2 p, pl_vec2 a, pl_vec2 b, double *t) {
 /* Boundary lines -> prescribed nodes and flux loads; free numbering. */
 static pl_status apply_lines(struct pl_fluid *f) {
     pl_fl_system *s = &f->sys;
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     int nn = m->nn;
     free(s->is_dir); free(s->dir_head); free(s->dir_line); free(s->fload); free(s->free_index); free(s->free_node);
     s->is_dir = calloc((size_t)nn, 1);
@@ -222,7 +222,7 @@ pl_status pl_fl_system_build(struct pl_fluid *f) {
 /* Element admittance (eq. 3.11) and mass matrices into the full pattern. */
 void pl_fl_assemble(struct pl_fluid *f) {
     pl_fl_system *s = &f->sys;
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     const int consistent = f->par.mass_consistent;
     memset(s->kval, 0, sizeof(double) * (size_t)s->nnz);
     memset(s->mval, 0, sizeof(double) * (size_t)s->nnz);
@@ -259,7 +259,7 @@ void pl_fl_assemble(struct pl_fluid *f) {
    uniform region the loads cancel; at no-flow walls they make the pressure gradient -rho_f a
    that accelerates the water, at head lines the flow that a fixed free surface lets through. */
 void pl_fl_add_frame_load(const struct pl_fluid *f, double *r) {
-    const pl_fl_mesh *m = &f->mesh;
+    const pl_mesh *m = &f->mesh;
     const pl_vec2 fa = pl_fl_frame_gradient(f);
     const double ax = fa.x, ay = fa.y;
     if (ax == 0 && ay == 0) return;

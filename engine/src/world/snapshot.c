@@ -2,11 +2,9 @@
  * of the world struct (all scalars) and deep copies of every array that carries state. On
  * restore the live world keeps its own buffers and capacities; only their contents and the
  * scalars are taken from the snapshot. The broadphase's grid/large split is kept too (it sets
- * the skin and so the rebuild times); its other buffers are scratch. The pore-fluid model's
- * state is captured by the fluid module (fluid/fluid_snapshot.c). */
-#include "dem/world_internal.h"
-#include "fluid/fluid_hook.h"
-#include "fluid/fluid_snapshot.h"
+ * the skin and so the rebuild times); its other buffers are scratch. Each attached model
+ * captures its own state through its class (snapshot/restore of world/model.h). */
+#include "world/world_layer.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -33,7 +31,8 @@ struct pl_snapshot {
     void *data[NSPECS];  /* deep copies */
     uint8_t *is_large;   /* broadphase split (NULL when the world was never classified) */
     int32_t *large_list;
-    pl_fl_snapshot *fluid; /* NULL when the world had no fluid model */
+    pl_model_slot *models; /* the attached models' own snapshots (self = the copy) */
+    int model_n;
     size_t bytes;
 };
 
@@ -55,7 +54,8 @@ void pl_snapshot_destroy(pl_snapshot **sp) {
     for (int k = 0; k < NSPECS; k++) free((*sp)->data[k]);
     free((*sp)->is_large);
     free((*sp)->large_list);
-    pl__fluid_snapshot_free(&(*sp)->fluid);
+    for (int k = 0; k < (*sp)->model_n; k++) (*sp)->models[k].cls->snapshot_free((*sp)->models[k].self);
+    free((*sp)->models);
     free(*sp);
     *sp = NULL;
 }
@@ -65,15 +65,24 @@ pl_snapshot *pl_world_snapshot(pl_world *w) {
     if (!s) return NULL;
     s->w = *w;
     s->bytes = sizeof *s;
-    if (w->fluid) {
-        size_t fb = 0;
-        s->fluid = pl__fluid_snapshot(w->fluid, &fb);
-        if (!s->fluid) {
+    if (w->model_n > 0) {
+        s->models = calloc((size_t)w->model_n, sizeof *s->models);
+        if (!s->models) {
             pl_snapshot_destroy(&s);
-            pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory for the fluid state");
+            pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory");
             return NULL;
         }
-        s->bytes += fb;
+        for (int k = 0; k < w->model_n; k++) {
+            size_t mb = 0;
+            void *copy = w->models[k].cls->snapshot(w->models[k].self, &mb);
+            if (!copy) {
+                pl_snapshot_destroy(&s);
+                pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory for the %s model's state", w->models[k].cls->name);
+                return NULL;
+            }
+            s->models[s->model_n++] = (pl_model_slot){w->models[k].cls, copy};
+            s->bytes += mb;
+        }
     }
     for (int k = 0; k < NSPECS; k++) {
         const size_t bytes = count_of(w, SPECS[k].count_kind) * SPECS[k].elem;
@@ -110,13 +119,28 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
                          "restore: the snapshot is of a world with %d bodies, %d outline vertices and %d materials; "
                          "this one has %d, %d and %d",
                          o->n, o->verts_n, o->material_count, w->n, w->verts_n, w->material_count);
-    /* the fluid first: it may fail (out of memory) before anything of the world changed */
-    if (s->fluid) {
-        pl_status st = pl__fluid_restore(w, s->fluid);
+    /* the models first: they may fail (out of memory) before anything of the grains changed.
+       A model attached after the snapshot was taken goes; one the snapshot has and the world
+       lost comes back. */
+    for (int k = 0; k < s->model_n; k++) {
+        const pl_model_class *cls = s->models[k].cls;
+        void *self = pl__world_model(w, cls);
+        if (!self) {
+            self = cls->create();
+            if (!self) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory for the %s model", cls->name);
+            pl_status st = pl__world_attach(w, cls, self);
+            if (st != PL_OK) {
+                cls->destroy(self);
+                return st;
+            }
+        }
+        pl_status st = cls->restore(self, w, s->models[k].self);
         if (st != PL_OK) return st;
-    } else if (w->fluid) { /* the snapshot is from before the first fluid quad */
-        pl__fluid_free(w->fluid);
-        w->fluid = NULL;
+    }
+    for (int k = w->model_n - 1; k >= 0; k--) {
+        int kept = 0;
+        for (int j = 0; j < s->model_n; j++) kept |= s->models[j].cls == w->models[k].cls;
+        if (!kept) pl__world_detach(w, w->models[k].cls);
     }
     if (s->is_large && w->class_cap < w->n) {
         uint8_t *a = realloc(w->is_large, (size_t)w->n);
@@ -155,7 +179,13 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
     w->cell_items_cap = live.cell_items_cap;
     w->body_cell_cap = live.body_cell_cap;
     w->cursor_cap = live.cursor_cap;
-    w->fluid = live.fluid;
+    w->models = live.models;
+    w->model_n = live.model_n;
+    w->model_cap = live.model_cap;
+    w->ext_force = live.ext_force;
+    w->ext_moment = live.ext_moment;
+    w->wants_load = live.wants_load;
+    w->ext_cap = live.ext_cap;
     memcpy(w->error, live.error, sizeof w->error);
     for (int k = 0; k < NSPECS; k++) {
         const size_t bytes = count_of(o, SPECS[k].count_kind) * SPECS[k].elem;
