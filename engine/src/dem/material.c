@@ -1,4 +1,5 @@
 /* Materials and the combined parameters of material pairs. */
+#include "core/alloc.h"
 #include "dem/world_internal.h"
 #include <math.h>
 #include <stdlib.h>
@@ -74,7 +75,7 @@ int pl_world_add_material(pl_world *w, const pl_material_def *def) {
         return pl__error(w, PL_ERR_ARG, "material '%s': restitution must be in (0, 1] (got %g)", def->name, def->restitution);
     if (w->material_count == w->material_cap) {
         int cap = w->material_cap ? 2 * w->material_cap : 8;
-        pl_material *m = realloc(w->materials, (size_t)cap * sizeof *m);
+        pl_material *m = pl_realloc(w->materials, (size_t)cap * sizeof *m);
         if (!m) return pl__error(w, PL_ERR_NOMEM, "material: out of memory");
         w->materials = m;
         w->material_cap = cap;
@@ -87,18 +88,18 @@ int pl_world_add_material(pl_world *w, const pl_material_def *def) {
     m->def.name = m->name;
     /* grow the override table keeping previous overrides */
     const int n = id + 1;
-    pl_pair_def *ov = malloc((size_t)n * n * sizeof *ov);
-    pl_pair_params *pp = malloc((size_t)n * n * sizeof *pp);
+    pl_pair_def *ov = pl_malloc((size_t)n * n * sizeof *ov);
+    pl_pair_params *pp = pl_malloc((size_t)n * n * sizeof *pp);
     if (!ov || !pp) {
-        free(ov);
-        free(pp);
+        pl_free(ov);
+        pl_free(pp);
         return pl__error(w, PL_ERR_NOMEM, "material: out of memory");
     }
     for (int i = 0; i < n; i++)
         for (int j = 0; j < n; j++)
             ov[i * n + j] = (i < id && j < id) ? w->pair_overrides[i * id + j] : pl_default_pair_def();
-    free(w->pair_overrides);
-    free(w->pair_params);
+    pl_free(w->pair_overrides);
+    pl_free(w->pair_params);
     w->pair_overrides = ov;
     w->pair_params = pp;
     w->material_count = n;

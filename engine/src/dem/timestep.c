@@ -5,6 +5,7 @@
  * discs whose contacts act at the rim and max(k_N, k_S) for polygons whose corners carry
  * normal forces off the centroid). The step is dt_safety times the smallest of these,
  * capped by MAX_DT_CR. */
+#include "core/alloc.h"
 #include "dem/world_internal.h"
 #include <math.h>
 #include <stdlib.h>
@@ -22,10 +23,10 @@ void pl__compute_dt(pl_world *w) {
     r.limiting_body = -1;
     r.limit_kind = "none";
     if (nm > 0) {
-        uint8_t *used = calloc((size_t)nm, 1);
-        double *kn = calloc((size_t)nm, sizeof *kn), *ks = calloc((size_t)nm, sizeof *ks);
-        double *cn = calloc((size_t)nm, sizeof *cn), *zeta = calloc((size_t)nm, sizeof *zeta);
-        double *roll = calloc((size_t)nm, sizeof *roll);
+        uint8_t *used = pl_calloc((size_t)nm, 1);
+        double *kn = pl_calloc((size_t)nm, sizeof *kn), *ks = pl_calloc((size_t)nm, sizeof *ks);
+        double *cn = pl_calloc((size_t)nm, sizeof *cn), *zeta = pl_calloc((size_t)nm, sizeof *zeta);
+        double *roll = pl_calloc((size_t)nm, sizeof *roll);
         if (used && kn && ks && cn && zeta && roll) {
             for (int i = 0; i < w->n; i++) used[w->material[i]] = 1;
             for (int a = 0; a < nm; a++)
@@ -62,7 +63,7 @@ void pl__compute_dt(pl_world *w) {
                 }
             }
         }
-        free(used); free(kn); free(ks); free(cn); free(zeta); free(roll);
+        pl_free(used); pl_free(kn); pl_free(ks); pl_free(cn); pl_free(zeta); pl_free(roll);
     }
     if (w->def.dt > 0) {
         r.dt = w->def.dt;

@@ -5,6 +5,7 @@
  * parameter table that carry a MIMES name (fluid/darcy/darcy_params.c), gathered here once, in
  * the order of the model registry (world/models.c). The flag values are the one storage of a
  * model's flag-backed def (pl__world_flag_values). */
+#include "core/alloc.h"
 #include "dem/world_internal.h"
 #include "world/world_layer.h"
 #include <threads.h>
@@ -118,7 +119,7 @@ pl_status pl__world_set_flag_values(pl_world *w, const pl_model_class *cls, cons
 
 void pl__flags_init(pl_world *w) {
     ensure_table();
-    w->flag_values = malloc((size_t)NFLAGS * sizeof *w->flag_values);
+    w->flag_values = pl_malloc((size_t)NFLAGS * sizeof *w->flag_values);
     if (!w->flag_values) return;
     for (int i = 0; i < NFLAGS; i++) w->flag_values[i] = FLAGS[i].def;
     /* flags mirrored by the world definition */

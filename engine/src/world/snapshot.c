@@ -4,6 +4,7 @@
  * scalars are taken from the snapshot. The broadphase's grid/large split is kept too (it sets
  * the skin and so the rebuild times); its other buffers are scratch. Each attached model
  * captures its own state through its class (snapshot/restore of world/model.h). */
+#include "core/alloc.h"
 #include "world/world_layer.h"
 #include <stdlib.h>
 #include <string.h>
@@ -51,22 +52,22 @@ static void **field_ptr(pl_world *w, const array_spec *s) { return (void **)((ch
 
 void pl_snapshot_destroy(pl_snapshot **sp) {
     if (!sp || !*sp) return;
-    for (int k = 0; k < NSPECS; k++) free((*sp)->data[k]);
-    free((*sp)->is_large);
-    free((*sp)->large_list);
+    for (int k = 0; k < NSPECS; k++) pl_free((*sp)->data[k]);
+    pl_free((*sp)->is_large);
+    pl_free((*sp)->large_list);
     for (int k = 0; k < (*sp)->model_n; k++) (*sp)->models[k].cls->snapshot_free((*sp)->models[k].self);
-    free((*sp)->models);
-    free(*sp);
+    pl_free((*sp)->models);
+    pl_free(*sp);
     *sp = NULL;
 }
 
 pl_snapshot *pl_world_snapshot(pl_world *w) {
-    pl_snapshot *s = calloc(1, sizeof *s);
+    pl_snapshot *s = pl_calloc(1, sizeof *s);
     if (!s) return NULL;
     s->w = *w;
     s->bytes = sizeof *s;
     if (w->model_n > 0) {
-        s->models = calloc((size_t)w->model_n, sizeof *s->models);
+        s->models = pl_calloc((size_t)w->model_n, sizeof *s->models);
         if (!s->models) {
             pl_snapshot_destroy(&s);
             pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory");
@@ -87,7 +88,7 @@ pl_snapshot *pl_world_snapshot(pl_world *w) {
     for (int k = 0; k < NSPECS; k++) {
         const size_t bytes = count_of(w, SPECS[k].count_kind) * SPECS[k].elem;
         if (bytes == 0) continue;
-        s->data[k] = malloc(bytes);
+        s->data[k] = pl_malloc(bytes);
         if (!s->data[k]) {
             pl_snapshot_destroy(&s);
             pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory");
@@ -98,8 +99,8 @@ pl_snapshot *pl_world_snapshot(pl_world *w) {
     }
     /* the grid/large split decides the skin and the rebuild times: keep it as it is */
     if (w->class_cap >= w->n && w->n > 0 && w->is_large) {
-        s->is_large = malloc((size_t)w->n);
-        s->large_list = malloc((size_t)(w->large_n > 0 ? w->large_n : 1) * sizeof *s->large_list);
+        s->is_large = pl_malloc((size_t)w->n);
+        s->large_list = pl_malloc((size_t)(w->large_n > 0 ? w->large_n : 1) * sizeof *s->large_list);
         if (!s->is_large || !s->large_list) {
             pl_snapshot_destroy(&s);
             pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory");
@@ -143,15 +144,15 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
         if (!kept) pl__world_detach(w, w->models[k].cls);
     }
     if (s->is_large && w->class_cap < w->n) {
-        uint8_t *a = realloc(w->is_large, (size_t)w->n);
+        uint8_t *a = pl_realloc(w->is_large, (size_t)w->n);
         if (a) w->is_large = a;
-        int32_t *b = realloc(w->large_list, (size_t)w->n * sizeof *b);
+        int32_t *b = pl_realloc(w->large_list, (size_t)w->n * sizeof *b);
         if (b) w->large_list = b;
         if (!a || !b) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
         w->class_cap = w->n;
     }
     if (o->pair_n > w->pair_cap) {
-        pl_pair *p = realloc(w->pairs, (size_t)o->pair_n * sizeof *p);
+        pl_pair *p = pl_realloc(w->pairs, (size_t)o->pair_n * sizeof *p);
         if (!p) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
         w->pairs = p;
         w->pair_cap = o->pair_n;

@@ -1,6 +1,7 @@
 /* Output of the fluid field: VTK unstructured grid (.vtu, ASCII) and ParaView collection
  * (.pvd); the thesis's MATLAB-readable text files (Appendix B: FLUID_GEOMETRY_FILENAME,
  * FLUID_PRESSURES_FILENAME). */
+#include "core/alloc.h"
 #include "world/model.h"
 #include "fluid/darcy/darcy_internal.h"
 #include "fluid/darcy/darcy_world.h"
@@ -14,10 +15,10 @@ pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path) {
     struct pl_fluid *f = pl__darcy(w);
     FILE *fp = fopen(path, "w");
     if (!fp) return pl__world_error(w, PL_ERR_IO, "fluid_write_vtu: cannot write '%s'", path);
-    double *buf = malloc(sizeof(double) * (size_t)(nn > ne ? nn : ne));
-    double *buf2 = malloc(sizeof(double) * (size_t)ne);
+    double *buf = pl_malloc(sizeof(double) * (size_t)(nn > ne ? nn : ne));
+    double *buf2 = pl_malloc(sizeof(double) * (size_t)ne);
     if (!buf || !buf2) {
-        fclose(fp); free(buf); free(buf2);
+        fclose(fp); pl_free(buf); pl_free(buf2);
         return pl__world_error(w, PL_ERR_NOMEM, "fluid_write_vtu: out of memory");
     }
     fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
@@ -54,7 +55,7 @@ pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path) {
         fprintf(fp, "</DataArray>\n");
     }
     fprintf(fp, "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-    free(buf); free(buf2);
+    pl_free(buf); pl_free(buf2);
     if (fclose(fp) != 0) return pl__world_error(w, PL_ERR_IO, "fluid_write_vtu: error writing '%s'", path);
     return PL_OK;
 }
