@@ -4,6 +4,8 @@
  * CHOLMOD's own workspace is CHOLMOD's and not counted). */
 #include "../physics/common.h"
 #include "porelab/alloc.h"
+#include "porelab/assert.h"
+#include "world/world_layer.h"
 #include "porelab/fluid.h"
 #include "harness.h"
 #include <stdint.h>
@@ -113,7 +115,25 @@ static int no_allocation_in_settled_steps(int darcy, int settle_steps) {
 static int no_allocation_in_1000_settled_steps(void) { return no_allocation_in_settled_steps(0, 0); }
 static int no_allocation_in_1000_darcy_steps(void) { return no_allocation_in_settled_steps(1, 2000); }
 
+/* A programmer error inside the engine reaches the assertion handler in builds with asserts,
+   and is the same silent no-op as before in Release. */
+static int seen;
+static void count_failure(const char *file, int line, const char *expr, void *ctx) {
+    (void)ctx;
+    seen++;
+    fprintf(stderr, "  handler called: %s:%d: %s\n", file, line, expr);
+}
+static int engine_assert_reaches_handler(void) {
+    pl_set_assert_handler(count_failure, NULL);
+    const void *cls = pl__model_class_at(pl__model_class_count());
+    pl_set_assert_handler(NULL, NULL);
+    ENSURE(cls == NULL);
+    ENSURE(seen == (pl_asserts_enabled() ? 1 : 0));
+    return 0;
+}
+
 int main(void) {
+    RUN(engine_assert_reaches_handler);
     RUN(byte_count_zero_after_destroy);
     RUN(no_allocation_in_1000_settled_steps);
     RUN(no_allocation_in_1000_darcy_steps);

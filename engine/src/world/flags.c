@@ -6,6 +6,7 @@
  * the order of the model registry (world/models.c). The flag values are the one storage of a
  * model's flag-backed def (pl__world_flag_values). */
 #include "core/alloc.h"
+#include "core/assert.h"
 #include "dem/world_internal.h"
 #include "world/world_layer.h"
 #include <threads.h>
@@ -94,6 +95,7 @@ int pl__flag_block_start(const pl_model_class *cls) {
     ensure_table();
     for (int c = 0; c < pl__model_class_count(); c++)
         if (pl__model_class_at(c) == cls) return g_block_start[c];
+    PL_ASSERT(0 && "model class missing from the class list (world/models.c)");
     return -1;
 }
 

@@ -2,6 +2,7 @@
  * handed to models, and the per-step call of every model (advance, then loads into the
  * external-force column, which is added to the dynamic bodies before the motion laws run). */
 #include "core/alloc.h"
+#include "core/assert.h"
 #include "world/world_layer.h"
 #include <stdarg.h>
 #include <stdio.h>
@@ -13,7 +14,7 @@ static const pl_model_class *const CLASSES[] = {&pl_darcy_class}; /* the hydrost
 #define NCLASSES ((int)(sizeof CLASSES / sizeof CLASSES[0]))
 
 int pl__model_class_count(void) { return NCLASSES; }
-const pl_model_class *pl__model_class_at(int i) { return i >= 0 && i < NCLASSES ? CLASSES[i] : NULL; }
+const pl_model_class *pl__model_class_at(int i) { return PL_CHECK(i >= 0 && i < NCLASSES) ? CLASSES[i] : NULL; }
 const pl_model_class *pl__model_class_named(const char *name) {
     for (int i = 0; name && i < NCLASSES; i++)
         if (strcmp(CLASSES[i]->name, name) == 0) return CLASSES[i];
@@ -48,6 +49,7 @@ void pl__world_detach(pl_world *w, const pl_model_class *cls) {
         w->model_n--;
         return;
     }
+    PL_ASSERT(0 && "detach: the model is not attached to this world");
 }
 
 void pl__models_destroy(pl_world *w) {
