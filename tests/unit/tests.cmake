@@ -21,3 +21,5 @@ foreach(_case "clean|0|no cycle" "cycle|1|module cycle dem -> geom -> mesh -> de
   set_tests_properties(include_graph_fixture_${_tree} PROPERTIES LABELS unit TIMEOUT 30)
 endforeach()
 set_tests_properties(engine_include_graph PROPERTIES LABELS unit TIMEOUT 30)
+# The allocator on whole worlds: no byte left after destroy, no allocation in settled steps.
+pl_add_c_test(test_alloc_world SOURCES unit/test_alloc_world.c LABEL unit)

@@ -1,5 +1,6 @@
 /* Formatted output into memory for the host's file writer (core/out.h). */
 #include "core/out.h"
+#include "core/alloc.h"
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,7 +23,7 @@ void pl_out_printf(pl_out *o, const char *fmt, ...) {
         }
         size_t nc = o->cap ? 2 * o->cap : 65536;
         while (nc < o->len + (size_t)n + 1) nc *= 2;
-        char *p = realloc(o->buf, nc);
+        char *p = pl_realloc(o->buf, nc);
         if (!p) {
             o->failed = 1;
             return;
@@ -33,7 +34,7 @@ void pl_out_printf(pl_out *o, const char *fmt, ...) {
 }
 
 void pl_out_free(pl_out *o) {
-    free(o->buf);
+    pl_free(o->buf);
     o->buf = NULL;
     o->len = o->cap = 0;
     o->failed = 0;

@@ -1,4 +1,5 @@
 /* Bodies: creation with exact mass properties, outlines, setters and per-body queries. */
+#include "core/alloc.h"
 #include "dem/world_internal.h"
 #include "geom/polygon.h"
 #include "porelab/shapes.h"
@@ -18,7 +19,7 @@ pl_body_def pl_default_body_def(void) {
 
 #define GROW(ptr, cap)                                                       \
     do {                                                                     \
-        void *p_ = realloc((ptr), (size_t)(cap) * sizeof *(ptr));            \
+        void *p_ = pl_realloc((ptr), (size_t)(cap) * sizeof *(ptr));         \
         if (!p_) return 0;                                                   \
         (ptr) = p_;                                                          \
     } while (0)

@@ -1,5 +1,6 @@
 /* Materials and the combined parameters of material pairs. */
 #include "dem/world_internal.h"
+#include "core/alloc.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -99,15 +100,15 @@ int pl_world_add_material(pl_world *w, const pl_material_def *def) {
            the new size and every pair recombined on each add) */
         const int cap = w->material_cap ? 2 * w->material_cap : 8;
         const size_t cells = (size_t)cap * (size_t)cap;
-        pl_material *m = realloc(w->materials, (size_t)cap * sizeof *m);
+        pl_material *m = pl_realloc(w->materials, (size_t)cap * sizeof *m);
         if (!m) return pl__error(w, PL_ERR_NOMEM, "material: out of memory");
         w->materials = m;
-        pl_pair_def *ov = realloc(w->pair_overrides, cells * sizeof *ov);
+        pl_pair_def *ov = pl_realloc(w->pair_overrides, cells * sizeof *ov);
         if (!ov) return pl__error(w, PL_ERR_NOMEM, "material: out of memory for %d materials' pair table", cap);
         w->pair_overrides = ov;
         /* the combined table is rebuilt from scratch when next needed: no need to keep it */
-        free(w->pair_params);
-        w->pair_params = calloc(cells, sizeof *w->pair_params);
+        pl_free(w->pair_params);
+        w->pair_params = pl_calloc(cells, sizeof *w->pair_params);
         if (!w->pair_params) return pl__error(w, PL_ERR_NOMEM, "material: out of memory for %d materials' pair table", cap);
         /* the triangle's later rows are written as materials arrive; the rest stays defined */
         const size_t used = (size_t)w->material_count * (w->material_count + 1) / 2;

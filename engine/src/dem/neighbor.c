@@ -7,6 +7,7 @@
  * tested against every other body. The list is rebuilt when some body has moved (or turned)
  * by more than half the skin since the last build. Pairs are kept sorted by (a, b); the
  * contact history (shear spring, previous overlap area) is carried over by merging. */
+#include "core/alloc.h"
 #include "dem/world_internal.h"
 #include <math.h>
 #include <stdlib.h>
@@ -18,7 +19,7 @@ static int grow_i32(int32_t **p, int *cap, int need) {
     if (need <= *cap) return 1;
     int c = *cap ? *cap : 64;
     while (c < need) c *= 2;
-    void *q = realloc(*p, (size_t)c * sizeof **p);
+    void *q = pl_realloc(*p, (size_t)c * sizeof **p);
     if (!q) return 0;
     *p = q;
     *cap = c;
@@ -29,7 +30,7 @@ static int grow_pairs(pl_pair **p, int *cap, int need) {
     if (need <= *cap) return 1;
     int c = *cap ? *cap : 256;
     while (c < need) c *= 2;
-    void *q = realloc(*p, (size_t)c * sizeof **p);
+    void *q = pl_realloc(*p, (size_t)c * sizeof **p);
     if (!q) return 0;
     *p = q;
     *cap = c;
@@ -47,16 +48,16 @@ static int classify(pl_world *w) {
     if (n > w->class_cap) {
         int c = w->class_cap ? w->class_cap : 64;
         while (c < n) c *= 2;
-        uint8_t *a = realloc(w->is_large, (size_t)c);
+        uint8_t *a = pl_realloc(w->is_large, (size_t)c);
         if (!a) return 0;
         w->is_large = a;
-        int32_t *b = realloc(w->large_list, (size_t)c * sizeof *b);
+        int32_t *b = pl_realloc(w->large_list, (size_t)c * sizeof *b);
         if (!b) return 0;
         w->large_list = b;
         w->class_cap = c;
     }
     /* typical size: median radius of the non-segment bodies */
-    double *r = malloc((size_t)(n > 0 ? n : 1) * sizeof *r);
+    double *r = pl_malloc((size_t)(n > 0 ? n : 1) * sizeof *r);
     if (!r) return 0;
     int m = 0;
     for (int i = 0; i < n; i++)
@@ -66,7 +67,7 @@ static int classify(pl_world *w) {
         qsort(r, (size_t)m, sizeof *r, cmp_double);
         med = r[m / 2];
     }
-    free(r);
+    pl_free(r);
     const double limit = 4.0 * med;
     double rmax = 0, rmin = INFINITY;
     w->large_n = 0;

@@ -11,6 +11,7 @@
  * is defined with (neighbor.c: c_N = 2 zeta sqrt(m* k_N)), so that the same damping given
  * either way gets the same step. */
 #include "dem/world_internal.h"
+#include "core/alloc.h"
 #include <math.h>
 #include <stdlib.h>
 
@@ -27,14 +28,14 @@ void pl__compute_dt(pl_world *w) {
     r.limiting_body = -1;
     r.limit_kind = "none";
     if (nm > 0) {
-        uint8_t *used = calloc((size_t)nm, 1);
-        double *kn = calloc((size_t)nm, sizeof *kn), *ks = calloc((size_t)nm, sizeof *ks);
-        double *cn = calloc((size_t)nm, sizeof *cn), *zeta = calloc((size_t)nm, sizeof *zeta);
-        double *roll = calloc((size_t)nm, sizeof *roll);
+        uint8_t *used = pl_calloc((size_t)nm, 1);
+        double *kn = pl_calloc((size_t)nm, sizeof *kn), *ks = pl_calloc((size_t)nm, sizeof *ks);
+        double *cn = pl_calloc((size_t)nm, sizeof *cn), *zeta = pl_calloc((size_t)nm, sizeof *zeta);
+        double *roll = pl_calloc((size_t)nm, sizeof *roll);
         /* the two lightest dynamic bodies of each material (the lightest's index in arg1) */
-        double *min1 = malloc((size_t)nm * sizeof *min1), *min2 = malloc((size_t)nm * sizeof *min2);
-        double *light = malloc((size_t)nm * sizeof *light);
-        int *arg1 = malloc((size_t)nm * sizeof *arg1);
+        double *min1 = pl_malloc((size_t)nm * sizeof *min1), *min2 = pl_malloc((size_t)nm * sizeof *min2);
+        double *light = pl_malloc((size_t)nm * sizeof *light);
+        int *arg1 = pl_malloc((size_t)nm * sizeof *arg1);
         if (used && kn && ks && cn && zeta && roll && min1 && min2 && light && arg1) {
             for (int a = 0; a < nm; a++) {
                 min1[a] = min2[a] = light[a] = INFINITY;
@@ -93,8 +94,8 @@ void pl__compute_dt(pl_world *w) {
                 }
             }
         }
-        free(used); free(kn); free(ks); free(cn); free(zeta); free(roll);
-        free(min1); free(min2); free(light); free(arg1);
+        pl_free(used); pl_free(kn); pl_free(ks); pl_free(cn); pl_free(zeta); pl_free(roll);
+        pl_free(min1); pl_free(min2); pl_free(light); pl_free(arg1);
     }
     if (w->def.dt > 0) {
         r.dt = w->def.dt;

@@ -4,6 +4,7 @@
  * nodes are merged and triangles with foreign nodes on a face are re-meshed into a fan (§3.5.2,
  * Fig. 3-4), the foreign nodes found by a range search over a uniform grid of nodes and ordered
  * by their distance along the face. */
+#include "core/alloc.h"
 #include "mesh/mesh.h"
 #include <math.h>
 #include <stdio.h>
@@ -82,10 +83,10 @@ typedef struct tri_list {
 static int tri_push(tri_list *l, int a, int b, int c, int quad) {
     if (l->n == l->cap) {
         int nc = l->cap ? 2 * l->cap : 1024;
-        int32_t *nv = realloc(l->v, sizeof(int32_t) * 3 * (size_t)nc);
+        int32_t *nv = pl_realloc(l->v, sizeof(int32_t) * 3 * (size_t)nc);
         if (!nv) return 0;
         l->v = nv;
-        int32_t *nq = realloc(l->q, sizeof(int32_t) * (size_t)nc);
+        int32_t *nq = pl_realloc(l->q, sizeof(int32_t) * (size_t)nc);
         if (!nq) return 0;
         l->q = nq;
         l->cap = nc;
@@ -121,8 +122,8 @@ static int pgrid_build(point_grid *g, const pl_vec2 *xy, int n, pl_vec2 lo, pl_v
     g->gx = (int)floor((hi.x - lo.x) / cell) + 1;
     g->gy = (int)floor((hi.y - lo.y) / cell) + 1;
     size_t nc = (size_t)g->gx * (size_t)g->gy;
-    g->start = calloc(nc + 1, sizeof(int32_t));
-    g->items = malloc(sizeof(int32_t) * (size_t)(n > 0 ? n : 1));
+    g->start = pl_calloc(nc + 1, sizeof(int32_t));
+    g->items = pl_malloc(sizeof(int32_t) * (size_t)(n > 0 ? n : 1));
     if (!g->start || !g->items) return 0;
     for (int i = 0; i < n; i++) {
         int cx = (int)floor((xy[i].x - lo.x) / cell), cy = (int)floor((xy[i].y - lo.y) / cell);
@@ -133,7 +134,7 @@ static int pgrid_build(point_grid *g, const pl_vec2 *xy, int n, pl_vec2 lo, pl_v
         g->start[(size_t)cy * g->gx + cx + 1]++;
     }
     for (size_t c = 0; c < nc; c++) g->start[c + 1] += g->start[c];
-    int32_t *fill = malloc(sizeof(int32_t) * nc);
+    int32_t *fill = pl_malloc(sizeof(int32_t) * nc);
     if (!fill) return 0;
     memcpy(fill, g->start, sizeof(int32_t) * nc);
     for (int i = 0; i < n; i++) {
@@ -144,13 +145,13 @@ static int pgrid_build(point_grid *g, const pl_vec2 *xy, int n, pl_vec2 lo, pl_v
         if (cy >= g->gy) cy = g->gy - 1;
         g->items[fill[(size_t)cy * g->gx + cx]++] = i;
     }
-    free(fill);
+    pl_free(fill);
     return 1;
 }
 
 static void pgrid_free(point_grid *g) {
-    free(g->start);
-    free(g->items);
+    pl_free(g->start);
+    pl_free(g->items);
     memset(g, 0, sizeof *g);
 }
 
@@ -201,9 +202,9 @@ static int cmp_edge(const void *x, const void *y) {
 }
 
 void pl_mesh_free(pl_mesh *m) {
-    free(m->xy); free(m->tri); free(m->tri_quad); free(m->area); free(m->bc);
-    free(m->cell_start); free(m->cell_items); free(m->bedge);
-    free(m->tri_box); free(m->tri_cell0); free(m->edge_ang); free(m->edge_len);
+    pl_free(m->xy); pl_free(m->tri); pl_free(m->tri_quad); pl_free(m->area); pl_free(m->bc);
+    pl_free(m->cell_start); pl_free(m->cell_items); pl_free(m->bedge);
+    pl_free(m->tri_box); pl_free(m->tri_cell0); pl_free(m->edge_ang); pl_free(m->edge_len);
     memset(m, 0, sizeof *m);
 }
 
@@ -225,7 +226,7 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
         snprintf(msg, msglen, "fluid: the quads ask for %zu nodes; at most 20,000,000", nn_total);
         return PL_ERR_ARG;
     }
-    pl_vec2 *xy = malloc(sizeof(pl_vec2) * nn_total);
+    pl_vec2 *xy = pl_malloc(sizeof(pl_vec2) * nn_total);
     tri_list tl = {0};
     int32_t *rep = NULL, *order = NULL, *newid = NULL;
     point_grid pg = {0};
@@ -264,16 +265,16 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
     double scale = hypot(hi.x - lo.x, hi.y - lo.y);
     double tol = 1e-9 * scale;
     /* 2. merge coincident nodes (sweep in x) */
-    rep = malloc(sizeof(int32_t) * (size_t)nn);
-    order = malloc(sizeof(int32_t) * (size_t)nn);
-    newid = malloc(sizeof(int32_t) * (size_t)nn);
+    rep = pl_malloc(sizeof(int32_t) * (size_t)nn);
+    order = pl_malloc(sizeof(int32_t) * (size_t)nn);
+    newid = pl_malloc(sizeof(int32_t) * (size_t)nn);
     if (!rep || !order || !newid) goto fail;
-    xkey *keys = malloc(sizeof(xkey) * (size_t)nn);
+    xkey *keys = pl_malloc(sizeof(xkey) * (size_t)nn);
     if (!keys) goto fail;
     for (int i = 0; i < nn; i++) { rep[i] = i; keys[i] = (xkey){xy[i].x, i}; }
     qsort(keys, (size_t)nn, sizeof(xkey), cmp_x);
     for (int i = 0; i < nn; i++) order[i] = keys[i].i;
-    free(keys);
+    pl_free(keys);
     for (int a = 0; a < nn; a++) {
         int i = order[a];
         for (int b = a + 1; b < nn && xy[order[b]].x - xy[i].x <= tol; b++) {
@@ -303,7 +304,7 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
     while (((hi.x - lo.x) / avg_edge + 1) * ((hi.y - lo.y) / avg_edge + 1) > 4.0 * nn + 16) avg_edge *= 1.5;
     if (!pgrid_build(&pg, xy, nn, lo, hi, avg_edge)) goto fail;
     int hcap = 256;
-    hbuf = malloc(sizeof(hang) * hcap);
+    hbuf = pl_malloc(sizeof(hang) * hcap);
     if (!hbuf) goto fail;
     int split = 0;
     for (int t = 0; t < tl.n; t++) {
@@ -312,7 +313,7 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
             int nh = find_on_segment(&pg, xy, a, b, tol * 10, hbuf, hcap);
             if (nh > hcap) {
                 hcap = nh;
-                hang *nb = realloc(hbuf, sizeof(hang) * hcap);
+                hang *nb = pl_realloc(hbuf, sizeof(hang) * hcap);
                 if (!nb) goto fail;
                 hbuf = nb;
                 nh = find_on_segment(&pg, xy, a, b, tol * 10, hbuf, hcap);
@@ -337,13 +338,13 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
     /* 4. finish: areas, gradient constants, checks */
     m->nn = nn;
     m->ne = tl.n;
-    m->xy = realloc(xy, sizeof(pl_vec2) * (size_t)(nn > 0 ? nn : 1));
+    m->xy = pl_realloc(xy, sizeof(pl_vec2) * (size_t)(nn > 0 ? nn : 1));
     xy = NULL;
     m->tri = tl.v;
     m->tri_quad = tl.q;
     tl.v = NULL; tl.q = NULL;
-    m->area = malloc(sizeof(double) * (size_t)m->ne);
-    m->bc = malloc(sizeof(double) * 6 * (size_t)m->ne);
+    m->area = pl_malloc(sizeof(double) * (size_t)m->ne);
+    m->bc = pl_malloc(sizeof(double) * 6 * (size_t)m->ne);
     if (!m->xy || !m->area || !m->bc) goto fail;
     m->scale = scale;
     m->lo = lo;
@@ -368,7 +369,7 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
         bc[3] = pk.x - pj.x; bc[4] = pi.x - pk.x; bc[5] = pj.x - pi.x;
     }
     /* edges: each used once (boundary) or twice (interior, opposite directions) */
-    edges = malloc(sizeof(edge_rec) * 3 * (size_t)m->ne);
+    edges = pl_malloc(sizeof(edge_rec) * 3 * (size_t)m->ne);
     if (!edges) goto fail;
     for (int e = 0; e < m->ne; e++)
         for (int k = 0; k < 3; k++) {
@@ -391,7 +392,7 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
         i = j;
     }
     m->nbe = nb;
-    m->bedge = malloc(sizeof(int32_t) * 2 * (size_t)(nb > 0 ? nb : 1));
+    m->bedge = pl_malloc(sizeof(int32_t) * 2 * (size_t)(nb > 0 ? nb : 1));
     if (!m->bedge) goto fail;
     nb = 0;
     for (int i = 0; i < 3 * m->ne;) {
@@ -427,12 +428,12 @@ pl_status pl_mesh_build(pl_mesh *m, const pl_mesh_quad *quads, int nq, char *msg
             }
         }
     }
-    free(rep); free(order); free(newid); free(hbuf); free(edges);
+    pl_free(rep); pl_free(order); pl_free(newid); pl_free(hbuf); pl_free(edges);
     pgrid_free(&pg);
     return PL_OK;
 fail:
     if (status == PL_ERR_NOMEM) snprintf(msg, msglen, "fluid mesh: out of memory");
-    free(xy); free(tl.v); free(tl.q); free(rep); free(order); free(newid); free(hbuf); free(edges);
+    pl_free(xy); pl_free(tl.v); pl_free(tl.q); pl_free(rep); pl_free(order); pl_free(newid); pl_free(hbuf); pl_free(edges);
     pgrid_free(&pg);
     pl_mesh_free(m);
     return status;
@@ -441,7 +442,7 @@ fail:
 /* ---------------------------------------------------------- point location */
 
 pl_status pl_mesh_build_grid(pl_mesh *m) {
-    free(m->cell_start); free(m->cell_items);
+    pl_free(m->cell_start); pl_free(m->cell_items);
     m->cell_start = NULL; m->cell_items = NULL;
     double w = m->hi.x - m->lo.x, h = m->hi.y - m->lo.y;
     double tot = 0;
@@ -453,15 +454,15 @@ pl_status pl_mesh_build_grid(pl_mesh *m) {
     m->gx = (int)floor(w / cell) + 1;
     m->gy = (int)floor(h / cell) + 1;
     size_t nc = (size_t)m->gx * m->gy;
-    m->cell_start = calloc(nc + 1, sizeof(int32_t));
+    m->cell_start = pl_calloc(nc + 1, sizeof(int32_t));
     if (!m->cell_start) return PL_ERR_NOMEM;
     for (int pass = 0; pass < 2; pass++) {
         int32_t *fill = NULL;
         if (pass == 1) {
             for (size_t c = 0; c < nc; c++) m->cell_start[c + 1] += m->cell_start[c];
-            m->cell_items = malloc(sizeof(int32_t) * (size_t)(m->cell_start[nc] > 0 ? m->cell_start[nc] : 1));
-            fill = malloc(sizeof(int32_t) * nc);
-            if (!m->cell_items || !fill) { free(fill); return PL_ERR_NOMEM; }
+            m->cell_items = pl_malloc(sizeof(int32_t) * (size_t)(m->cell_start[nc] > 0 ? m->cell_start[nc] : 1));
+            fill = pl_malloc(sizeof(int32_t) * nc);
+            if (!m->cell_items || !fill) { pl_free(fill); return PL_ERR_NOMEM; }
             memcpy(fill, m->cell_start, sizeof(int32_t) * nc);
         }
         for (int e = 0; e < m->ne; e++) {
@@ -478,15 +479,15 @@ pl_status pl_mesh_build_grid(pl_mesh *m) {
                     else m->cell_items[fill[cidx]++] = e;
                 }
         }
-        free(fill);
+        pl_free(fill);
     }
     /* per-triangle boxes, first cells and edge angles/lengths: the same expressions the
        per-grain loops used to evaluate for every candidate triangle at every update */
-    free(m->tri_box); free(m->tri_cell0); free(m->edge_ang); free(m->edge_len);
-    m->tri_box = malloc(sizeof(double) * 4 * (size_t)(m->ne > 0 ? m->ne : 1));
-    m->tri_cell0 = malloc(sizeof(int32_t) * 2 * (size_t)(m->ne > 0 ? m->ne : 1));
-    m->edge_ang = malloc(sizeof(double) * 3 * (size_t)(m->ne > 0 ? m->ne : 1));
-    m->edge_len = malloc(sizeof(double) * 3 * (size_t)(m->ne > 0 ? m->ne : 1));
+    pl_free(m->tri_box); pl_free(m->tri_cell0); pl_free(m->edge_ang); pl_free(m->edge_len);
+    m->tri_box = pl_malloc(sizeof(double) * 4 * (size_t)(m->ne > 0 ? m->ne : 1));
+    m->tri_cell0 = pl_malloc(sizeof(int32_t) * 2 * (size_t)(m->ne > 0 ? m->ne : 1));
+    m->edge_ang = pl_malloc(sizeof(double) * 3 * (size_t)(m->ne > 0 ? m->ne : 1));
+    m->edge_len = pl_malloc(sizeof(double) * 3 * (size_t)(m->ne > 0 ? m->ne : 1));
     if (!m->tri_box || !m->tri_cell0 || !m->edge_ang || !m->edge_len) return PL_ERR_NOMEM;
     for (int e = 0; e < m->ne; e++) {
         const int32_t *v = &m->tri[3 * e];

@@ -5,6 +5,8 @@
  * parameter table that carry a MIMES name (fluid/darcy/darcy_params.c), gathered here once, in
  * the order of the model registry (world/models.c). The flag values are the one storage of a
  * model's flag-backed def (pl__world_flag_values). */
+#include "core/alloc.h"
+#include "core/assert.h"
 #include "dem/world_internal.h"
 #include "world/world_layer.h"
 #include <threads.h>
@@ -93,6 +95,7 @@ int pl__flag_block_start(const pl_model_class *cls) {
     ensure_table();
     for (int c = 0; c < pl__model_class_count(); c++)
         if (pl__model_class_at(c) == cls) return g_block_start[c];
+    PL_ASSERT(0 && "model class missing from the class list (world/models.c)");
     return -1;
 }
 
@@ -118,7 +121,7 @@ pl_status pl__world_set_flag_values(pl_world *w, const pl_model_class *cls, cons
 
 void pl__flags_init(pl_world *w) {
     ensure_table();
-    w->flag_values = malloc((size_t)NFLAGS * sizeof *w->flag_values);
+    w->flag_values = pl_malloc((size_t)NFLAGS * sizeof *w->flag_values);
     if (!w->flag_values) return;
     for (int i = 0; i < NFLAGS; i++) w->flag_values[i] = FLAGS[i].def;
     /* flags mirrored by the world definition */

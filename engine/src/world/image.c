@@ -1,6 +1,7 @@
 /* State images: a growable byte buffer that models write their state into (save) and read it
  * back from (load), with counted arrays so that a damaged or foreign image is refused instead of
  * read past its end. The file format around these sections is in world/snapshot_file.c. */
+#include "core/alloc.h"
 #include "world/image_internal.h"
 #include <stdlib.h>
 #include <string.h>
@@ -14,7 +15,7 @@ pl_status pl__image_put(pl_image *img, const void *data, size_t bytes) {
             if (nc > SIZE_MAX / 2) return img->failed = 1, PL_ERR_NOMEM;
             nc *= 2;
         }
-        unsigned char *p = realloc(img->data, nc);
+        unsigned char *p = pl_realloc(img->data, nc);
         if (!p) return img->failed = 1, PL_ERR_NOMEM;
         img->data = p;
         img->cap = nc;
@@ -49,6 +50,6 @@ pl_status pl__image_get_array(pl_image *img, void *data, size_t elem, size_t cou
 size_t pl__image_left(const pl_image *img) { return img->failed ? 0 : img->len - img->pos; }
 
 void pl__image_free(pl_image *img) {
-    free(img->data);
+    pl_free(img->data);
     memset(img, 0, sizeof *img);
 }

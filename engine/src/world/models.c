@@ -1,6 +1,8 @@
 /* The models attached to a world: the registry of built-in classes, attachment, the grain view
  * handed to models, and the per-step call of every model (advance, then loads into the
  * external-force column, which is added to the dynamic bodies before the motion laws run). */
+#include "core/alloc.h"
+#include "core/assert.h"
 #include "world/world_layer.h"
 #include <stdarg.h>
 #include <stdio.h>
@@ -12,7 +14,7 @@ static const pl_model_class *const CLASSES[] = {&pl_darcy_class, &pl_hydrostatic
 #define NCLASSES ((int)(sizeof CLASSES / sizeof CLASSES[0]))
 
 int pl__model_class_count(void) { return NCLASSES; }
-const pl_model_class *pl__model_class_at(int i) { return i >= 0 && i < NCLASSES ? CLASSES[i] : NULL; }
+const pl_model_class *pl__model_class_at(int i) { return PL_CHECK(i >= 0 && i < NCLASSES) ? CLASSES[i] : NULL; }
 const pl_model_class *pl__model_class_named(const char *name) {
     for (int i = 0; name && i < NCLASSES; i++)
         if (strcmp(CLASSES[i]->name, name) == 0) return CLASSES[i];
@@ -30,7 +32,7 @@ pl_status pl__world_attach(pl_world *w, const pl_model_class *cls, void *self) {
         return pl__error(w, PL_ERR_STATE, "%s: the world already has this model attached", cls->name);
     if (w->model_n == w->model_cap) {
         const int nc = w->model_cap ? 2 * w->model_cap : 4;
-        pl_model_slot *p = realloc(w->models, (size_t)nc * sizeof *p);
+        pl_model_slot *p = pl_realloc(w->models, (size_t)nc * sizeof *p);
         if (!p) return pl__error(w, PL_ERR_NOMEM, "%s: out of memory attaching the model", cls->name);
         w->models = p;
         w->model_cap = nc;
@@ -47,11 +49,12 @@ void pl__world_detach(pl_world *w, const pl_model_class *cls) {
         w->model_n--;
         return;
     }
+    PL_ASSERT(0 && "detach: the model is not attached to this world");
 }
 
 void pl__models_destroy(pl_world *w) {
     for (int k = w->model_n - 1; k >= 0; k--) w->models[k].cls->destroy(w->models[k].self);
-    free(w->models);
+    pl_free(w->models);
     w->models = NULL;
     w->model_n = w->model_cap = 0;
 }
@@ -102,11 +105,11 @@ pl_grain_view pl__world_grains(const pl_world *w) {
 pl_status pl__ext_reserve(pl_world *w) {
     if (w->ext_cap >= w->n && w->ext_force) return PL_OK;
     const int nc = w->n + 64;
-    pl_vec2 *f = realloc(w->ext_force, (size_t)nc * sizeof *f);
+    pl_vec2 *f = pl_realloc(w->ext_force, (size_t)nc * sizeof *f);
     if (f) w->ext_force = f;
-    double *m = realloc(w->ext_moment, (size_t)nc * sizeof *m);
+    double *m = pl_realloc(w->ext_moment, (size_t)nc * sizeof *m);
     if (m) w->ext_moment = m;
-    uint8_t *q = realloc(w->wants_load, (size_t)nc);
+    uint8_t *q = pl_realloc(w->wants_load, (size_t)nc);
     if (q) w->wants_load = q;
     if (!f || !m || !q) return pl__error(w, PL_ERR_NOMEM, "step: out of memory for the external-force column");
     for (int i = w->ext_cap; i < nc; i++) {

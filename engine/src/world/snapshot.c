@@ -4,6 +4,7 @@
  * scalars are taken from the snapshot. The broadphase's grid/large split is kept too (it sets
  * the skin and so the rebuild times); its other buffers are scratch. Each attached model
  * captures its own state through its class (snapshot/restore of world/model.h). */
+#include "core/alloc.h"
 #include "world/world_layer.h"
 #include "world/image_internal.h"
 #include "world/state_image.h"
@@ -54,22 +55,22 @@ static void **field_ptr(pl_world *w, const array_spec *s) { return (void **)((ch
 
 void pl_snapshot_destroy(pl_snapshot **sp) {
     if (!sp || !*sp) return;
-    for (int k = 0; k < NSPECS; k++) free((*sp)->data[k]);
-    free((*sp)->is_large);
-    free((*sp)->large_list);
+    for (int k = 0; k < NSPECS; k++) pl_free((*sp)->data[k]);
+    pl_free((*sp)->is_large);
+    pl_free((*sp)->large_list);
     for (int k = 0; k < (*sp)->model_n; k++) (*sp)->models[k].cls->snapshot_free((*sp)->models[k].self);
-    free((*sp)->models);
-    free(*sp);
+    pl_free((*sp)->models);
+    pl_free(*sp);
     *sp = NULL;
 }
 
 pl_snapshot *pl_world_snapshot(pl_world *w) {
-    pl_snapshot *s = calloc(1, sizeof *s);
+    pl_snapshot *s = pl_calloc(1, sizeof *s);
     if (!s) return NULL;
     s->w = *w;
     s->bytes = sizeof *s;
     if (w->model_n > 0) {
-        s->models = calloc((size_t)w->model_n, sizeof *s->models);
+        s->models = pl_calloc((size_t)w->model_n, sizeof *s->models);
         if (!s->models) {
             pl_snapshot_destroy(&s);
             pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory");
@@ -90,7 +91,7 @@ pl_snapshot *pl_world_snapshot(pl_world *w) {
     for (int k = 0; k < NSPECS; k++) {
         const size_t bytes = count_of(w, SPECS[k].count_kind) * SPECS[k].elem;
         if (bytes == 0) continue;
-        s->data[k] = malloc(bytes);
+        s->data[k] = pl_malloc(bytes);
         if (!s->data[k]) {
             pl_snapshot_destroy(&s);
             pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory");
@@ -101,8 +102,8 @@ pl_snapshot *pl_world_snapshot(pl_world *w) {
     }
     /* the grid/large split decides the skin and the rebuild times: keep it as it is */
     if (w->class_cap >= w->n && w->n > 0 && w->is_large) {
-        s->is_large = malloc((size_t)w->n);
-        s->large_list = malloc((size_t)(w->large_n > 0 ? w->large_n : 1) * sizeof *s->large_list);
+        s->is_large = pl_malloc((size_t)w->n);
+        s->large_list = pl_malloc((size_t)(w->large_n > 0 ? w->large_n : 1) * sizeof *s->large_list);
         if (!s->is_large || !s->large_list) {
             pl_snapshot_destroy(&s);
             pl__error(w, PL_ERR_NOMEM, "snapshot: out of memory");
@@ -154,15 +155,15 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
 static pl_status restore_grains(pl_world *w, const pl_snapshot *s) {
     const pl_world *o = &s->w;
     if (s->is_large && w->class_cap < w->n) {
-        uint8_t *a = realloc(w->is_large, (size_t)w->n);
+        uint8_t *a = pl_realloc(w->is_large, (size_t)w->n);
         if (a) w->is_large = a;
-        int32_t *b = realloc(w->large_list, (size_t)w->n * sizeof *b);
+        int32_t *b = pl_realloc(w->large_list, (size_t)w->n * sizeof *b);
         if (b) w->large_list = b;
         if (!a || !b) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
         w->class_cap = w->n;
     }
     if (o->pair_n > w->pair_cap) {
-        pl_pair *p = realloc(w->pairs, (size_t)o->pair_n * sizeof *p);
+        pl_pair *p = pl_realloc(w->pairs, (size_t)o->pair_n * sizeof *p);
         if (!p) return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
         w->pairs = p;
         w->pair_cap = o->pair_n;
@@ -281,12 +282,12 @@ pl_status pl__grains_save(const pl_world *w, pl_image *img) {
         const void *data = *field_ptr((pl_world *)w, &SPECS[k]);
         if (SPECS[k].offset == offsetof(pl_world, materials) && count > 0) {
             /* without the name pointers (restore points them at the names again) */
-            pl_material *m = malloc(count * sizeof *m);
+            pl_material *m = pl_malloc(count * sizeof *m);
             if (!m) return PL_ERR_NOMEM;
             memcpy(m, data, count * sizeof *m);
             for (size_t i = 0; i < count; i++) m[i].def.name = NULL;
             st = pl__image_put_array(img, m, SPECS[k].elem, count);
-            free(m);
+            pl_free(m);
         } else {
             st = pl__image_put_array(img, data, SPECS[k].elem, count);
         }
@@ -306,7 +307,7 @@ static pl_status get_new_array(pl_image *img, void **out, size_t elem, size_t co
     *out = NULL;
     if (count > 0) {
         if (count > (SIZE_MAX - 16) / elem || 16 + elem * count > img->len - img->pos) return img->failed = 1, PL_ERR_IO;
-        *out = malloc(elem * count);
+        *out = pl_malloc(elem * count);
         if (!*out) return PL_ERR_NOMEM;
     }
     return pl__image_get_array(img, *out, elem, count);
@@ -314,11 +315,11 @@ static pl_status get_new_array(pl_image *img, void **out, size_t elem, size_t co
 
 pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
     *out = NULL;
-    pl_snapshot *s = calloc(1, sizeof *s);
+    pl_snapshot *s = pl_calloc(1, sizeof *s);
     if (!s) return pl__error(w, PL_ERR_NOMEM, "load state: out of memory");
     int32_t kind = 0;
     if (pl__image_get(img, &s->w, sizeof s->w) != PL_OK || pl__image_get(img, &kind, sizeof kind) != PL_OK) {
-        free(s);
+        pl_free(s);
         return pl__error(w, PL_ERR_IO, "load state: the grains section ends inside the world's scalars");
     }
     pl_world *o = &s->w;
@@ -328,7 +329,7 @@ pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
     o->models = NULL;
     if (o->n != w->n || o->verts_n != w->verts_n || o->material_count != w->material_count) {
         const int on = o->n, ov = o->verts_n, om = o->material_count;
-        free(s);
+        pl_free(s);
         return pl__error(w, PL_ERR_STATE,
                          "load state: the file is of a world with %d bodies, %d outline vertices and %d materials; "
                          "this one has %d, %d and %d (load a state into the world its scene builds)",
@@ -336,7 +337,7 @@ pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
     }
     if (o->pair_n < 0 || o->large_n < 0 || o->large_n > o->n) {
         const int pn = o->pair_n, ln = o->large_n;
-        free(s);
+        pl_free(s);
         return pl__error(w, PL_ERR_IO, "load state: damaged grains section (%d pairs, %d large bodies)", pn, ln);
     }
     pl_status st = PL_OK;
@@ -358,7 +359,7 @@ pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
         s->is_large = a;
         s->large_list = b;
         if (st == PL_OK && !s->large_list) { /* large_n = 0: restore copies nothing but wants a buffer */
-            s->large_list = malloc(sizeof *s->large_list);
+            s->large_list = pl_malloc(sizeof *s->large_list);
             if (!s->large_list) st = PL_ERR_NOMEM;
         }
         if (st != PL_OK) pl__error(w, st, "load state: the broadphase split of the grains section does not fit");

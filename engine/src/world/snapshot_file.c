@@ -30,6 +30,7 @@
  * world lacks is created, one the file lacks is detached, as pl_world_restore does) and last
  * the grain store. */
 #include "world/image_internal.h"
+#include "core/alloc.h"
 #include "world/state_image.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -127,7 +128,7 @@ pl_status pl_world_save_state(const pl_world *w, void **bytes, size_t *len) {
     return PL_OK;
 }
 
-void pl_state_free(void *bytes) { free(bytes); }
+void pl_state_free(void *bytes) { pl_free(bytes); }
 
 /* Checks the header; fills h. Messages go to err. */
 static pl_status read_header(const unsigned char *p, size_t len, header *h, char *err, size_t errlen) {

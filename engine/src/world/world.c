@@ -2,6 +2,7 @@
  * list, contact forces, the attached models (advance, loads into the external-force column),
  * motion laws, integration, guards (DESIGN §2). */
 #include "world/world_layer.h"
+#include "core/alloc.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -33,11 +34,11 @@ pl_status pl__error(const pl_world *w, pl_status s, const char *fmt, ...) {
 const char *pl_world_last_error(const pl_world *w) { return w ? w->error : "no world"; }
 
 pl_world *pl_world_create(const pl_world_def *def) {
-    pl_world *w = calloc(1, sizeof *w);
+    pl_world *w = pl_calloc(1, sizeof *w);
     if (!w) return NULL;
-    w->error = calloc(PL_ERR_LEN, 1);
+    w->error = pl_calloc(PL_ERR_LEN, 1);
     if (!w->error) {
-        free(w);
+        pl_free(w);
         return NULL;
     }
     w->def = def ? *def : pl_default_world_def();
@@ -49,8 +50,8 @@ pl_world *pl_world_create(const pl_world_def *def) {
     w->nonfinite_body = -1;
     pl__flags_init(w);
     if (!w->flag_values) {
-        free(w->error);
-        free(w);
+        pl_free(w->error);
+        pl_free(w);
         return NULL;
     }
     return w;
@@ -60,24 +61,24 @@ void pl_world_destroy(pl_world **wp) {
     if (!wp || !*wp) return;
     pl_world *w = *wp;
     pl__models_destroy(w);
-    free(w->ext_force); free(w->ext_moment); free(w->wants_load);
-    free(w->materials);
-    free(w->pair_params);
-    free(w->pair_overrides);
-    free(w->pos); free(w->vel); free(w->force);
-    free(w->angle); free(w->omega); free(w->torque);
-    free(w->mass); free(w->inv_mass); free(w->inertia); free(w->inv_inertia);
-    free(w->radius); free(w->area); free(w->shape); free(w->motion);
-    free(w->material); free(w->user_id); free(w->law); free(w->load); free(w->load_moment);
-    free(w->x0); free(w->tally); free(w->vert_offset); free(w->vert_count);
-    free(w->verts_local); free(w->verts_world);
-    free(w->pairs); free(w->pairs_scratch);
-    free(w->pos_at_build); free(w->angle_at_build);
-    free(w->cell_start); free(w->cell_items); free(w->body_cell); free(w->cursor);
-    free(w->is_large); free(w->large_list); free(w->cand);
-    free(w->flag_values);
-    free(w->error);
-    free(w);
+    pl_free(w->ext_force); pl_free(w->ext_moment); pl_free(w->wants_load);
+    pl_free(w->materials);
+    pl_free(w->pair_params);
+    pl_free(w->pair_overrides);
+    pl_free(w->pos); pl_free(w->vel); pl_free(w->force);
+    pl_free(w->angle); pl_free(w->omega); pl_free(w->torque);
+    pl_free(w->mass); pl_free(w->inv_mass); pl_free(w->inertia); pl_free(w->inv_inertia);
+    pl_free(w->radius); pl_free(w->area); pl_free(w->shape); pl_free(w->motion);
+    pl_free(w->material); pl_free(w->user_id); pl_free(w->law); pl_free(w->load); pl_free(w->load_moment);
+    pl_free(w->x0); pl_free(w->tally); pl_free(w->vert_offset); pl_free(w->vert_count);
+    pl_free(w->verts_local); pl_free(w->verts_world);
+    pl_free(w->pairs); pl_free(w->pairs_scratch);
+    pl_free(w->pos_at_build); pl_free(w->angle_at_build);
+    pl_free(w->cell_start); pl_free(w->cell_items); pl_free(w->body_cell); pl_free(w->cursor);
+    pl_free(w->is_large); pl_free(w->large_list); pl_free(w->cand);
+    pl_free(w->flag_values);
+    pl_free(w->error);
+    pl_free(w);
     *wp = NULL;
 }
 

@@ -22,6 +22,7 @@
  * skeleton does not cross the mesh boundary (walls), and where it leaves the porous region
  * (pure-fluid elements) vbar is its own and the mixture flux stays continuous. Summed over all
  * nodes the source vanishes (sum_i grad N_i = 0): the model conserves the mixture's volume. */
+#include "core/alloc.h"
 #include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdlib.h>
@@ -32,8 +33,8 @@ double pl_fl_storage_factor(const struct pl_fluid *f) {
 }
 
 void pl_fl_consolidation_free(struct pl_fluid *f) {
-    free(f->src); free(f->stor); free(f->stor_assembled); free(f->ref_pos); free(f->ref_ang);
-    free(f->vbar); free(f->elem_bedge); free(f->bchord);
+    pl_free(f->src); pl_free(f->stor); pl_free(f->stor_assembled); pl_free(f->ref_pos); pl_free(f->ref_ang);
+    pl_free(f->vbar); pl_free(f->elem_bedge); pl_free(f->bchord);
     f->vbar = f->bchord = NULL;
     f->elem_bedge = NULL;
     f->src = f->stor = f->stor_assembled = NULL;
@@ -45,12 +46,12 @@ void pl_fl_consolidation_free(struct pl_fluid *f) {
 
 pl_status pl_fl_consolidation_alloc(struct pl_fluid *f) {
     if (f->src) return PL_OK;
-    f->src = calloc((size_t)f->mesh.nn, sizeof(double));
-    f->stor = calloc((size_t)f->mesh.ne, sizeof(double));
-    f->stor_assembled = malloc(sizeof(double) * (size_t)f->mesh.ne);
-    f->vbar = calloc(2 * (size_t)f->mesh.ne, sizeof(double));
-    f->elem_bedge = malloc(sizeof(int32_t) * 3 * (size_t)f->mesh.ne);
-    f->bchord = calloc((size_t)f->mesh.nbe + 1, sizeof(double));
+    f->src = pl_calloc((size_t)f->mesh.nn, sizeof(double));
+    f->stor = pl_calloc((size_t)f->mesh.ne, sizeof(double));
+    f->stor_assembled = pl_malloc(sizeof(double) * (size_t)f->mesh.ne);
+    f->vbar = pl_calloc(2 * (size_t)f->mesh.ne, sizeof(double));
+    f->elem_bedge = pl_malloc(sizeof(int32_t) * 3 * (size_t)f->mesh.ne);
+    f->bchord = pl_calloc((size_t)f->mesh.nbe + 1, sizeof(double));
     if (!f->src || !f->stor || !f->stor_assembled || !f->vbar || !f->elem_bedge || !f->bchord) return PL_ERR_NOMEM;
     for (int e = 0; e < f->mesh.ne; e++) f->stor_assembled[e] = -1;
     /* boundary edges of each element (an oriented boundary edge a->b belongs to the element
@@ -72,10 +73,10 @@ pl_status pl_fl_consolidation_alloc(struct pl_fluid *f) {
 static pl_status ensure_ref(struct pl_fluid *f, int n) {
     if (n <= f->ref_cap) return PL_OK;
     int nc = n + 64;
-    pl_vec2 *p = realloc(f->ref_pos, sizeof(pl_vec2) * (size_t)nc);
+    pl_vec2 *p = pl_realloc(f->ref_pos, sizeof(pl_vec2) * (size_t)nc);
     if (!p) return PL_ERR_NOMEM;
     f->ref_pos = p;
-    double *a = realloc(f->ref_ang, sizeof(double) * (size_t)nc);
+    double *a = pl_realloc(f->ref_ang, sizeof(double) * (size_t)nc);
     if (!a) return PL_ERR_NOMEM;
     f->ref_ang = a;
     f->ref_cap = nc;

@@ -3,6 +3,7 @@
  * fluid is updated (porosity -> permeability -> assembly -> solve: advance); every grain step
  * the fluid force and moment of the current field are given for each body the world asks for
  * (loads). FLUIDS_ON = 0 does no fluid work at all. */
+#include "core/alloc.h"
 #include "fluid/darcy/darcy_internal.h"
 #include "fluid/darcy/darcy_snapshot.h"
 #include "fluid/darcy/darcy_world.h"
@@ -58,7 +59,7 @@ pl_status pl__darcy_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
     int reuse = f->par.force_reuse && f->steps_since != 0;
     if (f->par.force_reuse && f->fcache_cap < g->n) {
         int nc = g->n + 64;
-        double *p = realloc(f->fcache, sizeof(double) * 3 * (size_t)nc);
+        double *p = pl_realloc(f->fcache, sizeof(double) * 3 * (size_t)nc);
         if (!p) return pl__world_error(w, PL_ERR_NOMEM, "fluid: out of memory for the reused forces");
         f->fcache = p;
         f->fcache_cap = nc;
@@ -93,7 +94,7 @@ pl_status pl__darcy_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
 }
 
 struct pl_fluid *pl__darcy_new(void) {
-    struct pl_fluid *f = calloc(1, sizeof *f);
+    struct pl_fluid *f = pl_calloc(1, sizeof *f);
     if (!f) return NULL;
     f->mesh_dirty = 1;
     f->par = pl_fl_default_params();
@@ -110,8 +111,8 @@ void pl__darcy_destroy(void *self) {
     pl__fluid_free_state(f);
     pl_fl_system_free(&f->sys);
     pl_mesh_free(&f->mesh);
-    free(f->fcache); free(f->quads); free(f->lines); free(f->cover); free(f->body_cover_start); free(f->cover_xyr); free(f->pix_pair);
-    free(f);
+    pl_free(f->fcache); pl_free(f->quads); pl_free(f->lines); pl_free(f->cover); pl_free(f->body_cover_start); pl_free(f->cover_xyr); pl_free(f->pix_pair);
+    pl_free(f);
 }
 
 uint64_t pl__darcy_hash(const void *self, uint64_t h) { return pl__fluid_hash(self, h); }

@@ -2,6 +2,7 @@
  * (.pvd); the thesis's MATLAB-readable text files (Appendix B: FLUID_GEOMETRY_FILENAME,
  * FLUID_PRESSURES_FILENAME). */
 #include "world/model.h"
+#include "core/alloc.h"
 #include "fluid/darcy/darcy_internal.h"
 #include "fluid/darcy/darcy_world.h"
 #include "core/out.h"
@@ -29,10 +30,10 @@ pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path) {
     if (nn <= 0) return pl__world_error(w, PL_ERR_STATE, "fluid_write_vtu: no fluid mesh");
     struct pl_fluid *f = pl__darcy(w);
     pl_out o = {0}, *fp = &o;
-    double *buf = malloc(sizeof(double) * (size_t)(nn > ne ? nn : ne));
-    double *buf2 = malloc(sizeof(double) * (size_t)ne);
+    double *buf = pl_malloc(sizeof(double) * (size_t)(nn > ne ? nn : ne));
+    double *buf2 = pl_malloc(sizeof(double) * (size_t)ne);
     if (!buf || !buf2) {
-        pl_out_free(fp); free(buf); free(buf2);
+        pl_out_free(fp); pl_free(buf); pl_free(buf2);
         return pl__world_error(w, PL_ERR_NOMEM, "fluid_write_vtu: out of memory");
     }
     pl_out_printf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
@@ -69,7 +70,7 @@ pl_status pl_world_fluid_write_vtu(pl_world *w, const char *path) {
         pl_out_printf(fp, "</DataArray>\n");
     }
     pl_out_printf(fp, "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-    free(buf); free(buf2);
+    pl_free(buf); pl_free(buf2);
     return write_out(w, fp, path, 0, "fluid_write_vtu");
 }
 

@@ -4,6 +4,7 @@
  * the element and the grains, union of grains, resolution settable). The void ratio
  * e = (A - A_s) / A_s (eq. 3.9) is clamped to 0.01..99 and mapped to a conductivity by
  * Kozeny-Carman e^3 / (1 + e) (eq. 3.8) between FLUID_PERM_LOW and FLUID_PERM_HIGH. */
+#include "core/alloc.h"
 #include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdlib.h>
@@ -115,7 +116,7 @@ static int point_in_body(const pl_fl_bodies *b, int i, pl_vec2 p) {
 static int push_cover(struct pl_fluid *f, int body, int elem, double area, int outside) {
     if (f->ncover == f->cover_cap) {
         int nc = f->cover_cap ? 2 * f->cover_cap : 4096;
-        pl_fl_cover *p = realloc(f->cover, sizeof(pl_fl_cover) * (size_t)nc);
+        pl_fl_cover *p = pl_realloc(f->cover, sizeof(pl_fl_cover) * (size_t)nc);
         if (!p) return 0;
         f->cover = p;
         f->cover_cap = nc;
@@ -277,10 +278,10 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
     f->cover_bodies = 0;
     if (b->n + 1 > f->body_cap) {
         int nc = b->n + 1 + 64;
-        int32_t *p = realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
+        int32_t *p = pl_realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
         if (!p) return PL_ERR_NOMEM;
         f->body_cover_start = p;
-        double *q = realloc(f->cover_xyr, sizeof(double) * 3 * (size_t)nc);
+        double *q = pl_realloc(f->cover_xyr, sizeof(double) * 3 * (size_t)nc);
         if (!q) return PL_ERR_NOMEM;
         f->cover_xyr = q;
         f->body_cap = nc;
@@ -361,14 +362,14 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
         /* group pairs by element (counting sort) and pixellate each element once; the
            scratch arrays are kept in the model and grow only when needed */
         if (f->pix_cap < f->ncover) {
-            int32_t *p = realloc(f->pix_pair, sizeof(int32_t) * (size_t)f->cover_cap);
+            int32_t *p = pl_realloc(f->pix_pair, sizeof(int32_t) * (size_t)f->cover_cap);
             if (!p) return PL_ERR_NOMEM;
             f->pix_pair = p;
             f->pix_cap = f->cover_cap;
         }
         if (!f->pix_cnt) {
-            f->pix_cnt = malloc(sizeof(int32_t) * (size_t)(m->ne + 1));
-            f->pix_fill = malloc(sizeof(int32_t) * (size_t)m->ne);
+            f->pix_cnt = pl_malloc(sizeof(int32_t) * (size_t)(m->ne + 1));
+            f->pix_fill = pl_malloc(sizeof(int32_t) * (size_t)m->ne);
             if (!f->pix_cnt || !f->pix_fill) return PL_ERR_NOMEM;
         }
         int32_t *cnt = f->pix_cnt, *fill = f->pix_fill, *pair_of = f->pix_pair;

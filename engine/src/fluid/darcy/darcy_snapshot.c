@@ -29,6 +29,7 @@
  *   scratch, live:     stamp/stamp_gen (only equality with the current generation matters),
  *                      pix_*, vbar, bchord, sys.work, sys.rhs/sol/wy/we, msg, capacities
  */
+#include "core/alloc.h"
 #include "fluid/darcy/darcy_snapshot.h"
 #include "fluid/darcy/darcy_internal.h"
 #include "fluid/darcy/darcy_world.h"
@@ -81,20 +82,20 @@ struct pl_fl_snapshot {
 void pl__fluid_snapshot_free(pl_fl_snapshot **zp) {
     if (!zp || !*zp) return;
     pl_fl_snapshot *z = *zp;
-    free(z->quads); free(z->lines);
-    free(z->head); free(z->head_prev); free(z->perm); free(z->perm_user); free(z->perm_assembled);
-    free(z->solid); free(z->voidr); free(z->porosity); free(z->grad);
-    free(z->kval); free(z->mval); free(z->mlump);
-    free(z->src); free(z->stor); free(z->stor_assembled); free(z->ref_pos); free(z->ref_ang);
-    free(z->cover); free(z->body_cover_start); free(z->cover_xyr); free(z->fcache);
-    free(z);
+    pl_free(z->quads); pl_free(z->lines);
+    pl_free(z->head); pl_free(z->head_prev); pl_free(z->perm); pl_free(z->perm_user); pl_free(z->perm_assembled);
+    pl_free(z->solid); pl_free(z->voidr); pl_free(z->porosity); pl_free(z->grad);
+    pl_free(z->kval); pl_free(z->mval); pl_free(z->mlump);
+    pl_free(z->src); pl_free(z->stor); pl_free(z->stor_assembled); pl_free(z->ref_pos); pl_free(z->ref_ang);
+    pl_free(z->cover); pl_free(z->body_cover_start); pl_free(z->cover_xyr); pl_free(z->fcache);
+    pl_free(z);
     *zp = NULL;
 }
 
 /* Copy of n bytes (NULL for none); counts the bytes and flags a failed allocation. */
 static void *dup(const void *p, size_t n, size_t *bytes, int *fail) {
     if (!p || n == 0) return NULL;
-    void *q = malloc(n);
+    void *q = pl_malloc(n);
     if (!q) { *fail = 1; return NULL; }
     memcpy(q, p, n);
     *bytes += n;
@@ -102,7 +103,7 @@ static void *dup(const void *p, size_t n, size_t *bytes, int *fail) {
 }
 
 pl_fl_snapshot *pl__fluid_snapshot(const struct pl_fluid *f, size_t *bytes) {
-    pl_fl_snapshot *z = calloc(1, sizeof *z);
+    pl_fl_snapshot *z = pl_calloc(1, sizeof *z);
     if (!z) return NULL;
     size_t b = sizeof *z;
     int fail = 0;
@@ -169,7 +170,7 @@ pl_fl_snapshot *pl__fluid_snapshot(const struct pl_fluid *f, size_t *bytes) {
 static int grow(void **p, int *cap, int need, size_t elem) {
     if (need <= *cap && *p) return 1;
     int nc = need + 64;
-    void *q = realloc(*p, elem * (size_t)nc);
+    void *q = pl_realloc(*p, elem * (size_t)nc);
     if (!q) return 0;
     *p = q;
     *cap = nc;
@@ -241,11 +242,11 @@ pl_status pl__fluid_restore(pl_world *w, struct pl_fluid *f, const pl_fl_snapsho
         COPY(f->porosity, z->porosity, ne);
         COPY(f->grad, z->grad, 2 * ne);
         if (z->has_perm_user) {
-            if (!f->perm_user) f->perm_user = malloc(sizeof(double) * (size_t)ne);
+            if (!f->perm_user) f->perm_user = pl_malloc(sizeof(double) * (size_t)ne);
             if (!f->perm_user) return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
             COPY(f->perm_user, z->perm_user, ne);
         } else {
-            free(f->perm_user);
+            pl_free(f->perm_user);
             f->perm_user = NULL;
         }
         COPY(f->sys.kval, z->kval, z->nnz);
@@ -269,9 +270,9 @@ pl_status pl__fluid_restore(pl_world *w, struct pl_fluid *f, const pl_fl_snapsho
         if (z->has_cover_start) {
             if (z->cover_bodies + 1 > f->body_cap || !f->body_cover_start || !f->cover_xyr) {
                 const int nc = z->cover_bodies + 1 + 64;
-                int32_t *p = realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
+                int32_t *p = pl_realloc(f->body_cover_start, sizeof(int32_t) * (size_t)nc);
                 if (p) f->body_cover_start = p;
-                double *q = realloc(f->cover_xyr, sizeof(double) * 3 * (size_t)nc);
+                double *q = pl_realloc(f->cover_xyr, sizeof(double) * 3 * (size_t)nc);
                 if (q) f->cover_xyr = q;
                 if (!p || !q) return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
                 f->body_cap = nc;
@@ -290,9 +291,9 @@ pl_status pl__fluid_restore(pl_world *w, struct pl_fluid *f, const pl_fl_snapsho
     if (z->ref_n > 0) {
         if (z->ref_n > f->ref_cap || !f->ref_pos || !f->ref_ang) {
             const int nc = z->ref_n + 64;
-            pl_vec2 *p = realloc(f->ref_pos, sizeof(pl_vec2) * (size_t)nc);
+            pl_vec2 *p = pl_realloc(f->ref_pos, sizeof(pl_vec2) * (size_t)nc);
             if (p) f->ref_pos = p;
-            double *a = realloc(f->ref_ang, sizeof(double) * (size_t)nc);
+            double *a = pl_realloc(f->ref_ang, sizeof(double) * (size_t)nc);
             if (a) f->ref_ang = a;
             if (!p || !a) return pl__world_error(w, PL_ERR_NOMEM, "restore: out of memory");
             f->ref_cap = nc;
@@ -418,7 +419,7 @@ pl_status pl__fluid_load(pl_world *w, struct pl_fluid *f, pl_image *img) {
         return pl__world_error(w, PL_ERR_STATE,
                                "load state: the darcy model's state was written by a build with another layout "
                                "(resume it with the build that wrote it)");
-    pl_fl_snapshot *z = calloc(1, sizeof *z);
+    pl_fl_snapshot *z = pl_calloc(1, sizeof *z);
     if (!z) return pl__world_error(w, PL_ERR_NOMEM, "load state: out of memory");
     pl_status st = PL_OK;
 #define PL_FL_GET(field) \
@@ -429,7 +430,7 @@ pl_status pl__fluid_load(pl_world *w, struct pl_fluid *f, pl_image *img) {
     PL_FL_GET(pressures_file)
 #undef PL_FL_GET
     if (st != PL_OK) {
-        free(z);
+        pl_free(z);
         return pl__world_error(w, PL_ERR_IO, "load state: the darcy section ends inside its scalars");
     }
     z->geometry_file[sizeof z->geometry_file - 1] = '\0';
@@ -438,7 +439,7 @@ pl_status pl__fluid_load(pl_world *w, struct pl_fluid *f, pl_image *img) {
     if (z->nq < 0 || z->nl < 0 || z->nn < 0 || z->ne < 0 || z->nnz < 0 || z->ncover < 0 || z->cover_bodies < 0 ||
         z->ref_n < 0 || z->fcache_n < 0 || z->nq > lim || z->nl > lim || z->nn > lim || z->ne > lim || z->nnz > lim ||
         z->ncover > lim || z->cover_bodies > lim || z->ref_n > lim || z->fcache_n > lim) {
-        free(z);
+        pl_free(z);
         return pl__world_error(w, PL_ERR_IO, "load state: damaged darcy section (negative or huge sizes)");
     }
 #define PL_FL_GET_ARRAY(field, count)                                                             \
@@ -446,7 +447,7 @@ pl_status pl__fluid_load(pl_world *w, struct pl_fluid *f, pl_image *img) {
         const size_t n_ = (size_t)(count), e_ = sizeof *z->field;                                 \
         if (n_ > 0) {                                                                             \
             if (n_ > (SIZE_MAX - 16) / e_ || 16 + n_ * e_ > pl__image_left(img)) st = PL_ERR_IO;                               \
-            else if (!(z->field = malloc(n_ * e_))) st = PL_ERR_NOMEM;                            \
+            else if (!(z->field = pl_malloc(n_ * e_))) st = PL_ERR_NOMEM;                            \
         }                                                                                         \
         if (st == PL_OK) st = pl__image_get_array(img, z->field, e_, n_);                         \
         if (st != PL_OK)                                                                          \

@@ -3,6 +3,7 @@
  * scattered into it, and the reduced SPD matrix of the free nodes (prescribed heads eliminated
  * symmetrically, eq. 3.16) handed to CHOLMOD, whose symbolic analysis is kept while the mesh
  * and the set of prescribed nodes do not change. */
+#include "core/alloc.h"
 #include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdio.h>
@@ -17,9 +18,9 @@ static int cmp_ij(const void *a, const void *b) {
 }
 
 void pl_fl_system_free(pl_fl_system *s) {
-    free(s->colp); free(s->rowi); free(s->kval); free(s->mval); free(s->mlump); free(s->emap); free(s->diag);
-    free(s->is_dir); free(s->dir_head); free(s->dir_line); free(s->fload);
-    free(s->free_index); free(s->free_node); free(s->amap); free(s->work);
+    pl_free(s->colp); pl_free(s->rowi); pl_free(s->kval); pl_free(s->mval); pl_free(s->mlump); pl_free(s->emap); pl_free(s->diag);
+    pl_free(s->is_dir); pl_free(s->dir_head); pl_free(s->dir_line); pl_free(s->fload);
+    pl_free(s->free_index); pl_free(s->free_node); pl_free(s->amap); pl_free(s->work);
     if (s->cc_started) {
         if (s->A) cholmod_free_sparse(&s->A, &s->cc);
         if (s->L) cholmod_free_factor(&s->L, &s->cc);
@@ -48,7 +49,7 @@ static pl_status build_pattern(struct pl_fluid *f) {
     pl_fl_system *s = &f->sys;
     const pl_mesh *m = &f->mesh;
     size_t n9 = 9 * (size_t)m->ne;
-    ij *pairs = malloc(sizeof(ij) * n9);
+    ij *pairs = pl_malloc(sizeof(ij) * n9);
     if (!pairs) return PL_ERR_NOMEM;
     for (int e = 0; e < m->ne; e++)
         for (int a = 0; a < 3; a++)
@@ -58,16 +59,16 @@ static pl_status build_pattern(struct pl_fluid *f) {
     for (size_t k = 0; k < n9; k++)
         if (nu == 0 || pairs[k].j != pairs[nu - 1].j || pairs[k].i != pairs[nu - 1].i) pairs[nu++] = pairs[k];
     s->nnz = (int)nu;
-    s->colp = calloc((size_t)m->nn + 1, sizeof(int32_t));
-    s->rowi = malloc(sizeof(int32_t) * nu);
-    s->kval = calloc(nu, sizeof(double));
-    s->mval = calloc(nu, sizeof(double));
-    s->emap = malloc(sizeof(int32_t) * n9);
-    s->diag = malloc(sizeof(int32_t) * (size_t)m->nn);
-    s->work = calloc((size_t)m->nn, sizeof(double));
-    s->mlump = calloc((size_t)m->nn, sizeof(double));
+    s->colp = pl_calloc((size_t)m->nn + 1, sizeof(int32_t));
+    s->rowi = pl_malloc(sizeof(int32_t) * nu);
+    s->kval = pl_calloc(nu, sizeof(double));
+    s->mval = pl_calloc(nu, sizeof(double));
+    s->emap = pl_malloc(sizeof(int32_t) * n9);
+    s->diag = pl_malloc(sizeof(int32_t) * (size_t)m->nn);
+    s->work = pl_calloc((size_t)m->nn, sizeof(double));
+    s->mlump = pl_calloc((size_t)m->nn, sizeof(double));
     if (!s->colp || !s->rowi || !s->kval || !s->mval || !s->emap || !s->diag || !s->work || !s->mlump) {
-        free(pairs);
+        pl_free(pairs);
         return PL_ERR_NOMEM;
     }
     for (size_t k = 0; k < nu; k++) {
@@ -75,7 +76,7 @@ static pl_status build_pattern(struct pl_fluid *f) {
         s->colp[pairs[k].j + 1]++;
     }
     for (int j = 0; j < m->nn; j++) s->colp[j + 1] += s->colp[j];
-    free(pairs);
+    pl_free(pairs);
     for (int e = 0; e < m->ne; e++)
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) s->emap[9 * e + 3 * a + b] = find_entry(s, m->tri[3 * e + b], m->tri[3 * e + a]);
@@ -97,13 +98,13 @@ static pl_status apply_lines(struct pl_fluid *f) {
     pl_fl_system *s = &f->sys;
     const pl_mesh *m = &f->mesh;
     int nn = m->nn;
-    free(s->is_dir); free(s->dir_head); free(s->dir_line); free(s->fload); free(s->free_index); free(s->free_node);
-    s->is_dir = calloc((size_t)nn, 1);
-    s->dir_head = calloc((size_t)nn, sizeof(double));
-    s->dir_line = malloc(sizeof(int32_t) * (size_t)nn);
-    s->fload = calloc((size_t)nn, sizeof(double));
-    s->free_index = malloc(sizeof(int32_t) * (size_t)nn);
-    s->free_node = malloc(sizeof(int32_t) * (size_t)nn);
+    pl_free(s->is_dir); pl_free(s->dir_head); pl_free(s->dir_line); pl_free(s->fload); pl_free(s->free_index); pl_free(s->free_node);
+    s->is_dir = pl_calloc((size_t)nn, 1);
+    s->dir_head = pl_calloc((size_t)nn, sizeof(double));
+    s->dir_line = pl_malloc(sizeof(int32_t) * (size_t)nn);
+    s->fload = pl_calloc((size_t)nn, sizeof(double));
+    s->free_index = pl_malloc(sizeof(int32_t) * (size_t)nn);
+    s->free_node = pl_malloc(sizeof(int32_t) * (size_t)nn);
     if (!s->is_dir || !s->dir_head || !s->dir_line || !s->fload || !s->free_index || !s->free_node) return PL_ERR_NOMEM;
     double tol = 1e-7 * m->scale;
     for (int i = 0; i < nn; i++) s->dir_line[i] = -1;
@@ -148,8 +149,8 @@ static pl_status build_reduced(struct pl_fluid *f) {
     if (s->sol) cholmod_free_dense(&s->sol, &s->cc);
     if (s->wy) cholmod_free_dense(&s->wy, &s->cc);
     if (s->we) cholmod_free_dense(&s->we, &s->cc);
-    free(s->amap);
-    s->amap = malloc(sizeof(int32_t) * (size_t)s->nnz);
+    pl_free(s->amap);
+    s->amap = pl_malloc(sizeof(int32_t) * (size_t)s->nnz);
     if (!s->amap) return PL_ERR_NOMEM;
     s->analysed = s->factorised = 0;
     if (s->nf == 0) {

@@ -1,6 +1,7 @@
 /* The fluid model seen from the world: public API of porelab/fluid.h (quads, lines, solves,
  * queries) and the per-step hook (fluid_hook.h) that couples the Darcy field to the grains
  * (seed 000 §3.3, Fig. 3-1; DESIGN §2 step 2). */
+#include "core/alloc.h"
 #include "world/model.h"
 #include "fluid/darcy/darcy_internal.h"
 #include "fluid/darcy/darcy_world.h"
@@ -119,9 +120,9 @@ void pl_world_get_darcy(const pl_world *w, pl_darcy_def *out) {
 }
 
 void pl__fluid_free_state(struct pl_fluid *f) {
-    free(f->head); free(f->head_prev); free(f->perm); free(f->perm_assembled); free(f->solid);
-    free(f->voidr); free(f->porosity); free(f->grad); free(f->stamp); free(f->perm_user);
-    free(f->pix_cnt); free(f->pix_fill);
+    pl_free(f->head); pl_free(f->head_prev); pl_free(f->perm); pl_free(f->perm_assembled); pl_free(f->solid);
+    pl_free(f->voidr); pl_free(f->porosity); pl_free(f->grad); pl_free(f->stamp); pl_free(f->perm_user);
+    pl_free(f->pix_cnt); pl_free(f->pix_fill);
     f->pix_cnt = f->pix_fill = NULL;
     f->head = f->head_prev = f->perm = f->perm_assembled = f->solid = f->voidr = f->porosity = f->grad = NULL;
     f->perm_user = NULL;
@@ -147,15 +148,15 @@ static pl_status ensure_built(pl_world *w) {
         st = pl_mesh_build(&f->mesh, f->quads, f->nq, f->msg, sizeof f->msg);
         if (st != PL_OK) return pl__world_error(w, st, "%s", f->msg);
         const int nn = f->mesh.nn, ne = f->mesh.ne;
-        f->head = calloc((size_t)nn, sizeof(double));
-        f->head_prev = calloc((size_t)nn, sizeof(double));
-        f->perm = calloc((size_t)ne, sizeof(double));
-        f->perm_assembled = calloc((size_t)ne, sizeof(double));
-        f->solid = calloc((size_t)ne, sizeof(double));
-        f->voidr = calloc((size_t)ne, sizeof(double));
-        f->porosity = calloc((size_t)ne, sizeof(double));
-        f->grad = calloc(2 * (size_t)ne, sizeof(double));
-        f->stamp = calloc((size_t)ne, sizeof(int32_t));
+        f->head = pl_calloc((size_t)nn, sizeof(double));
+        f->head_prev = pl_calloc((size_t)nn, sizeof(double));
+        f->perm = pl_calloc((size_t)ne, sizeof(double));
+        f->perm_assembled = pl_calloc((size_t)ne, sizeof(double));
+        f->solid = pl_calloc((size_t)ne, sizeof(double));
+        f->voidr = pl_calloc((size_t)ne, sizeof(double));
+        f->porosity = pl_calloc((size_t)ne, sizeof(double));
+        f->grad = pl_calloc(2 * (size_t)ne, sizeof(double));
+        f->stamp = pl_calloc((size_t)ne, sizeof(int32_t));
         if (!f->head || !f->head_prev || !f->perm || !f->perm_assembled || !f->solid || !f->voidr || !f->porosity ||
             !f->grad || !f->stamp)
             return pl__world_error(w, PL_ERR_NOMEM, "fluid: out of memory for %d nodes", nn);
@@ -303,7 +304,7 @@ int pl_world_add_fluid_quad(pl_world *w, const pl_fluid_quad_def *def) {
     }
     if (f->nq == f->qcap) {
         int nc = f->qcap ? 2 * f->qcap : 8;
-        pl_mesh_quad *p = realloc(f->quads, sizeof(pl_mesh_quad) * (size_t)nc);
+        pl_mesh_quad *p = pl_realloc(f->quads, sizeof(pl_mesh_quad) * (size_t)nc);
         if (!p) return pl__world_error(w, PL_ERR_NOMEM, "add_fluid_quad: out of memory");
         f->quads = p;
         f->qcap = nc;
@@ -335,7 +336,7 @@ static int add_line(pl_world *w, pl_vec2 a, pl_vec2 b, double value, int kind, c
     if (!f) return pl__world_error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
     if (f->nl == f->lcap) {
         int nc = f->lcap ? 2 * f->lcap : 8;
-        pl_fl_line *p = realloc(f->lines, sizeof(pl_fl_line) * (size_t)nc);
+        pl_fl_line *p = pl_realloc(f->lines, sizeof(pl_fl_line) * (size_t)nc);
         if (!p) return pl__world_error(w, PL_ERR_NOMEM, "%s: out of memory", fn);
         f->lines = p;
         f->lcap = nc;
@@ -428,7 +429,7 @@ pl_status pl_world_fluid_set_element_permeability(pl_world *w, const double *k, 
     for (int e = 0; e < count; e++)
         if (!(k[e] > 0) || !isfinite(k[e]))
             return pl__world_error(w, PL_ERR_ARG, "fluid_set_element_permeability: value %d is %g; must be > 0", e, k[e]);
-    if (!f->perm_user) f->perm_user = malloc(sizeof(double) * (size_t)count);
+    if (!f->perm_user) f->perm_user = pl_malloc(sizeof(double) * (size_t)count);
     if (!f->perm_user) return pl__world_error(w, PL_ERR_NOMEM, "fluid_set_element_permeability: out of memory");
     memcpy(f->perm_user, k, sizeof(double) * (size_t)count);
     return PL_OK;

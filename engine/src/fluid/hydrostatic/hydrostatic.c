@@ -4,6 +4,7 @@
  * hydrostatic_kernels.c. */
 #define _POSIX_C_SOURCE 200809L
 #include "fluid/hydrostatic/hydrostatic_internal.h"
+#include "core/alloc.h"
 #include "porelab/fluid.h"
 #include <math.h>
 #include <stdlib.h>
@@ -76,12 +77,12 @@ pl_status pl_world_attach_hydrostatic(pl_world *w, const pl_hydrostatic_def *def
                                "change it with pl_world_hydrostatic_redefine / w:water_set{...})");
     pl_status st = check_def(w, def);
     if (st != PL_OK) return st;
-    pl_hydrostatic *m = calloc(1, sizeof *m);
+    pl_hydrostatic *m = pl_calloc(1, sizeof *m);
     if (!m) return pl__world_error(w, PL_ERR_NOMEM, "water: out of memory");
     m->def = *def;
     fix_water_area(m, w);
     st = pl__world_attach(w, &pl_hydrostatic_class, m);
-    if (st != PL_OK) free(m);
+    if (st != PL_OK) pl_free(m);
     return st;
 }
 
@@ -164,7 +165,7 @@ static int hs_field(const void *self, const pl_world *w, int quantity, pl_vec2 *
 
 /* An empty instance (a snapshot restored into a world without water fills it). */
 static void *hs_create(void) {
-    pl_hydrostatic *m = calloc(1, sizeof *m);
+    pl_hydrostatic *m = pl_calloc(1, sizeof *m);
     if (m) m->def = pl_default_hydrostatic_def();
     return m;
 }
@@ -230,7 +231,7 @@ static uint64_t hs_hash(const void *self, uint64_t h) {
 
 static void *hs_snapshot(const void *self, size_t *bytes) {
     const pl_hydrostatic *m = self;
-    hs_snap *s = malloc(sizeof *s);
+    hs_snap *s = pl_malloc(sizeof *s);
     if (!s) return NULL;
     s->def = m->def;
     s->a_water = m->a_water;
@@ -247,7 +248,7 @@ static pl_status hs_restore(void *self, pl_world *w, const void *snap) {
     return PL_OK;
 }
 
-static void hs_snapshot_free(void *snap) { free(snap); }
+static void hs_snapshot_free(void *snap) { pl_free(snap); }
 
 /* Image layout (one section of the state image): 7 doubles (x_min, x_max, bottom, level,
    density, drag, a_water) and one int32 (moving_level). */
@@ -289,7 +290,7 @@ static double hs_cost(const void *self, long *calls) {
     return m->seconds;
 }
 
-static void hs_destroy(void *self) { free(self); }
+static void hs_destroy(void *self) { pl_free(self); }
 
 const pl_model_class pl_hydrostatic_class = {
     .name = "hydrostatic",
