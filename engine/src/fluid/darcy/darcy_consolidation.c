@@ -169,19 +169,7 @@ static double chord_disc(pl_vec2 a, pl_vec2 b, pl_vec2 c, double r) {
 static double chord_poly(pl_vec2 a, pl_vec2 b, const pl_vec2 *v, int n) {
     double t0 = 0, t1 = 1;
     pl_vec2 d = {b.x - a.x, b.y - a.y};
-    for (int k = 0; k < n && t0 < t1; k++) {
-        pl_vec2 p = v[k], q = v[(k + 1) % n];
-        pl_vec2 e = {q.x - p.x, q.y - p.y};
-        double sa = e.x * (a.y - p.y) - e.y * (a.x - p.x); /* >= 0 inside */
-        double sd = e.x * d.y - e.y * d.x;
-        if (sd == 0) {
-            if (sa < 0) return 0;
-        } else {
-            double t = -sa / sd;
-            if (sd > 0) { if (t > t0) t0 = t; }
-            else if (t < t1) t1 = t;
-        }
-    }
+    if (!pl_fl_clip_segment_convex(a, d, v, n, &t0, &t1)) return 0;
     return t1 > t0 ? (t1 - t0) * sqrt(d.x * d.x + d.y * d.y) : 0;
 }
 

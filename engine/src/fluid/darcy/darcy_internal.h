@@ -248,4 +248,25 @@ pl_fl_params pl_fl_default_params(void);
 
 /* timer */
 double pl_fl_now(void);
+
+/* Cyrus-Beck: narrows [*t0, *t1] to the part of the segment a + t d inside the convex
+   counter-clockwise polygon v (n vertices). Returns 0 when the segment misses it (parallel and
+   outside an edge). Shared by the porosity cut and the consolidation source. */
+static inline int pl_fl_clip_segment_convex(pl_vec2 a, pl_vec2 d, const pl_vec2 *v, int n, double *t0, double *t1) {
+    for (int k = 0; k < n && *t0 < *t1; k++) {
+        pl_vec2 p = v[k], q = v[(k + 1) % n];
+        pl_vec2 e = {q.x - p.x, q.y - p.y};
+        double sa = e.x * (a.y - p.y) - e.y * (a.x - p.x); /* >= 0 inside */
+        double sd = e.x * d.y - e.y * d.x;
+        if (sd == 0) {
+            if (sa < 0) return 0;
+        } else {
+            double t = -sa / sd;
+            if (sd > 0) { if (t > *t0) *t0 = t; }
+            else if (t < *t1) *t1 = t;
+        }
+    }
+    return 1;
+}
+
 #endif

@@ -176,19 +176,7 @@ static double chord_body(pl_vec2 a, pl_vec2 b, pl_vec2 c, double r, const pl_vec
         t0 = fmax(0, (-B - sq) / L2);
         t1 = fmin(1, (-B + sq) / L2);
     } else {
-        for (int k = 0; k < n && t0 < t1; k++) {
-            pl_vec2 p = v[k], q = v[(k + 1) % n];
-            pl_vec2 e = {q.x - p.x, q.y - p.y};
-            double sa = e.x * (a.y - p.y) - e.y * (a.x - p.x); /* >= 0 inside */
-            double sd = e.x * d.y - e.y * d.x;
-            if (sd == 0) {
-                if (sa < 0) return 0;
-            } else {
-                double t = -sa / sd;
-                if (sd > 0) { if (t > t0) t0 = t; }
-                else if (t < t1) t1 = t;
-            }
-        }
+        if (!pl_fl_clip_segment_convex(a, d, v, n, &t0, &t1)) return 0;
     }
     return t1 > t0 ? (t1 - t0) * sqrt(L2) : 0;
 }
