@@ -10,9 +10,10 @@ PKGS=(
   libsuitesparse-dev libopenblas-dev
   libplplot-dev plplot-driver-cairo
   libosmesa6-dev libsdl2-dev
+  libgmsh-dev liblapack-dev liblapacke-dev
 )
-# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server.
-OPTIONAL=(ffmpeg xvfb xdotool)
+# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps.
+OPTIONAL=(ffmpeg xvfb xdotool parallel)
 missing=()
 for p in "${PKGS[@]}" "${OPTIONAL[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
