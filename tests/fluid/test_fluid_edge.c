@@ -13,6 +13,12 @@
  * the floor the code already gives rho_f g A exactly (the last case checks it), and two
  * overlapping grains inside the mesh each feel rho_f g A too.
  *
+ * Every case is run three ways: with the grains' pieces cut for the drag (exact areas), in the
+ * thesis's force mode (drag off, uniform permeability, no consolidation: no pieces are cut at all)
+ * and with the pixel porosity method (FLUID_POROSITY_METHOD = 1); the edge is found from the mesh
+ * in all three, so the force is the same. Before that, the thesis mode and the pixel method
+ * still cut the outline at the mesh boundary: every case but the control failed there (floor disc
+ * F_y / rho_f g A = -0.876 / 0.541 / 0.867 at k_n = 1e5 / 1e6 / 1e7).
  * Cases, each at k_n = 1e5, 1e6, 1e7 N/m: a disc (r = 2.5 mm, rho_s = 2650) and polygons (a
  * 5 mm square resting flat, a hexagon resting on a vertex) on the floor; a disc and a square of
  * the water's density pushed into the left wall at mid-depth by a horizontal load of 0.3 N; a
@@ -22,11 +28,9 @@
  * on the pieces; moved by 1e-12 m, it takes the outline integral; both are checked to 1e-6 of
  * rho_f g A, as is the polygon's outline integral (the only form for polygons, printed twice) and its
  * moment (zero about the centroid).
- * Before the fix (outline integral cut at the mesh boundary), the floor disc felt
- * 0.33 / 0.79 / 0.93 rho_f g A at k_n = 1e5 / 1e6 / 1e7 (the printed "old" column is the force
- * with the mesh edge treated as dry, computed here from the overlap: rho_f g A minus the
- * boundary pressure times the chord), and the floor carried 2.14 / 1.28 / 1.08 times the disc's
- * submerged weight (checked here to 1e-3: k_n x overlap = (rho_s - rho_f) g A). */
+ * The printed "old" column is the force with the mesh edge treated as dry, computed here from the
+ * overlap (rho_f g A_above minus the boundary pressure times the chord, over rho_f g A); the floor
+ * load is checked to 1e-3: k_n x overlap = (rho_s - rho_f) g A. */
 #include "harness.h"
 #include "porelab/fluid.h"
 #include "porelab/world.h"
@@ -44,6 +48,12 @@ enum { DISC, SQUARE, HEXAGON };
 /* upward seepage: extra total head under the floor (0: still water); the drag is off then, so
    that the force is the pressure's, rho_f g A (1 + i) with i = DH / H */
 static double DH = 0;
+
+/* how the fluid sees the grains: pieces cut for the drag (exact areas), the thesis's force mode
+   (drag off, uniform permeability, no consolidation: no pieces cut at all), or pixel areas */
+enum { MODE_DRAG, MODE_THESIS, MODE_PIXEL };
+static int MODE = MODE_DRAG;
+static const char *MODE_NAME[] = {"exact pieces", "thesis force mode", "pixel porosity"};
 
 typedef struct {
     pl_world *w;
@@ -67,14 +77,14 @@ static setup make(int shape, double kn, double rho_s, pl_vec2 c, pl_vec2 load, d
     pl_world_add_fluid_quad(w, &q);
     pl_world_add_fluid_bc(w, (pl_vec2){0, H}, (pl_vec2){0.2, H}, 0.0);
     if (DH != 0) pl_world_add_fluid_bc(w, (pl_vec2){0, mesh_bottom}, (pl_vec2){0.2, mesh_bottom}, H - mesh_bottom + DH);
-    /* with seepage: drag off, and the permeability "from porosity" with equal low and high
-       values (uniform, so the gradient is uniform, but the grains' pieces are still cut: without
-       drag, porosity permeability or consolidation no pieces are cut and the mesh edge stays
-       dry, docs/fluid.md §12) */
+    /* with seepage: drag off, and in the modes that cut pieces the permeability "from porosity"
+       with equal low and high values (uniform, so the gradient is uniform) */
     const char *names[] = {"FLUIDS_ON", "FIRST_STEP_STATIC", "FLUID_PERM", "FLUID_DENSITY", "FLUID_SOLVE_TIMESTEPS",
-                           "FLUID_DRAG", "FLUID_PERM_LOW", "FLUID_PERM_HIGH"};
-    const double vals[] = {1, 1, DH != 0 ? 1 : 0, RHO, 1, DH != 0 ? 0 : 1, 1e-3, 1e-3};
-    for (int k = 0; k < 8; k++)
+                           "FLUID_DRAG", "FLUID_PERM_LOW", "FLUID_PERM_HIGH", "FLUID_POROSITY_METHOD"};
+    const int thesis = MODE == MODE_THESIS;
+    const double vals[] = {1, 1, DH != 0 && !thesis ? 1 : 0, RHO, 1, DH != 0 || thesis ? 0 : 1, 1e-3, 1e-3,
+                           MODE == MODE_PIXEL ? 1 : 0};
+    for (int k = 0; k < 9; k++)
         if (pl_world_set_flag(w, names[k], vals[k]) != PL_OK) fprintf(stderr, "%s\n", pl_world_last_error(w));
     pl_material_def md = pl_default_material_def();
     md.name = "grain";
@@ -182,9 +192,10 @@ static int check(setup *s, int shape, const char *what, double kn, double dx, do
         return 1;
     }
     fprintf(stderr,
-            "  %-28s kn %.0e: overlap floor %.3e wall %.3e m; F/F_ref - (0, 1) = (%+.1e, %+.1e) %s, (%+.1e, %+.1e) "
+            "  %-28s %-17s kn %.0e: overlap floor %.3e wall %.3e m; F/F_ref - (0, 1) = (%+.1e, %+.1e) %s, (%+.1e, %+.1e) "
             "outline; moment %+.1e N m; old (edge dry) %.3f\n",
-            what, kn, dy > 0 ? dy : 0, dx > 0 ? dx : 0, F.x / ref, F.y / ref - 1, shape == DISC ? "pieces" : "outline", F2.x / ref, F2.y / ref - 1,
+            what, MODE_NAME[MODE], kn, dy > 0 ? dy : 0, dx > 0 ? dx : 0, F.x / ref, F.y / ref - 1,
+            shape == DISC && MODE == MODE_DRAG ? "pieces" : "outline", F2.x / ref, F2.y / ref - 1,
             shape == DISC ? 0.0 : M2, old);
     ENSURE(dx > 0 || dy > 0); /* it does reach beyond the mesh */
     ENSURE_NEAR(F.y / ref, 1, 1e-6);
@@ -270,14 +281,17 @@ static int test_seepage_on_floor(void) {
 }
 
 int main(void) {
-    RUN(test_disc_on_floor);
-    RUN(test_square_on_floor);
-    RUN(test_hexagon_on_floor);
-    RUN(test_disc_into_side_wall);
-    RUN(test_square_into_side_wall);
-    RUN(test_disc_into_corner);
-    RUN(test_square_into_corner);
-    RUN(test_mesh_below_floor);
-    RUN(test_seepage_on_floor);
+    for (MODE = MODE_DRAG; MODE <= MODE_PIXEL; MODE++) {
+        fprintf(stderr, "-- %s\n", MODE_NAME[MODE]);
+        RUN(test_disc_on_floor);
+        RUN(test_square_on_floor);
+        RUN(test_hexagon_on_floor);
+        RUN(test_disc_into_side_wall);
+        RUN(test_square_into_side_wall);
+        RUN(test_disc_into_corner);
+        RUN(test_square_into_corner);
+        RUN(test_mesh_below_floor);
+        RUN(test_seepage_on_floor);
+    }
     return pl_test_report();
 }

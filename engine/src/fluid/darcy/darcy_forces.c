@@ -11,25 +11,39 @@
  * the skeleton.
  * Mesh edge (docs/fluid.md §6.1): the part of a grain pressed into a wall at the mesh's edge
  * that lies beyond the boundary (a contact overlap) is not dry: the porosity update folds it
- * into the boundary element as pieces flagged outside, and the outline integral uses, beyond
- * the boundary, the linear field of the nearest such element, so that in still water the grain
- * feels rho_f g A for its whole area A however far the contact presses it in. */
+ * into the boundary elements as pieces flagged outside, and the outline integral uses, beyond
+ * the boundary, the linear field of the nearest boundary element the grain crosses
+ * (pl_fl_edge_elements, from the mesh alone: also when no pieces are cut or they are pixel
+ * counts), so that in still water the grain feels rho_f g A for its whole area A however far the
+ * contact presses it in. */
 #include "fluid/darcy/darcy_internal.h"
 #include <math.h>
 #include <stdlib.h>
 
 #define BP_CAP 256
-#define EXT_MAX 8
 #define ARC_CAP 512
 
-/* Elements whose field is extended beyond the mesh boundary for body i: those of its pieces
-   flagged outside (none for a body inside the mesh or one crossing the boundary as a solid). */
-static int ext_elems(const struct pl_fluid *f, int i, int *ext) {
-    if (f->par.porosity_method != 0 || !f->body_cover_start || i >= f->cover_bodies) return 0;
-    int n = 0;
-    for (int k = f->body_cover_start[i]; k < f->body_cover_start[i + 1]; k++)
-        if (f->cover[k].outside && n < EXT_MAX) ext[n++] = f->cover[k].elem;
-    return n;
+/* Elements whose field is extended beyond the mesh boundary for a body (pl_fl_edge_elements:
+   none for a body inside the mesh or one crossing the boundary as a solid), found the first time
+   a piece of its outline lies beyond the boundary; NULL: p = 0 beyond the boundary. */
+typedef struct edge_ext {
+    const pl_mesh *m;
+    pl_vec2 c;
+    double r;
+    const pl_vec2 *v;
+    int nv;
+    int found, n;
+    int32_t elem[PL_FL_EDGE_MAX];
+} edge_ext;
+
+static int ext_count(edge_ext *x) {
+    if (!x) return 0;
+    if (!x->found) {
+        double w[PL_FL_EDGE_MAX];
+        x->n = pl_fl_edge_elements(x->m, x->c, x->r, x->v, x->nv, x->elem, w, PL_FL_EDGE_MAX);
+        x->found = 1;
+    }
+    return x->n;
 }
 
 /* Squared distance from x to triangle e's edges (x outside the mesh). */
@@ -48,7 +62,7 @@ static double tri_dist2(const pl_mesh *m, int e, pl_vec2 x) {
 }
 
 /* The element of ext nearest to x: its linear field is the pressure at x beyond the boundary. */
-static int nearest_ext(const pl_mesh *m, const int *ext, int n, pl_vec2 x) {
+static int nearest_ext(const pl_mesh *m, const int32_t *ext, int n, pl_vec2 x) {
     int best = ext[0];
     double d = n > 1 ? tri_dist2(m, ext[0], x) : 0;
     for (int k = 1; k < n; k++) {
@@ -110,7 +124,7 @@ static void piece(pl_vec2 a, pl_vec2 d, pl_vec2 c, double u0, double u1, double 
 }
 
 static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c, double u0, double u1, pl_vec2 *F,
-                       double *M, int depth, const int *ext, int next) {
+                       double *M, int depth, edge_ext *ext) {
     const pl_mesh *m = &f->mesh;
     pl_vec2 d = {b.x - a.x, b.y - a.y};
     pl_vec2 pa = {a.x + u0 * d.x, a.y + u0 * d.y}, pb = {a.x + u1 * d.x, a.y + u1 * d.y};
@@ -118,7 +132,7 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
     int i0 = 0, j0 = 0, i1 = -1, j1 = -1;
     /* a piece wholly beyond the grid: nothing to cut it at (with an extension it is still wet) */
     if (!pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) {
-        if (!next) return;
+        if (!ext_count(ext)) return;
         i0 = j0 = 0;
         i1 = j1 = -1;
     }
@@ -140,8 +154,8 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
         }
     if (overflow && depth < 40) {
         double um = 0.5 * (u0 + u1);
-        edge_force(f, a, b, c, u0, um, F, M, depth + 1, ext, next);
-        edge_force(f, a, b, c, um, u1, F, M, depth + 1, ext, next);
+        edge_force(f, a, b, c, u0, um, F, M, depth + 1, ext);
+        edge_force(f, a, b, c, um, u1, F, M, depth + 1, ext);
         return;
     }
     qsort(bp, (size_t)nb, sizeof(double), cmp_d);
@@ -154,8 +168,9 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
         pl_vec2 xm = {a.x + sm * d.x, a.y + sm * d.y};
         int e = pl_mesh_locate(m, xm);
         if (e < 0) {
-            if (!next) continue;          /* outside the fluid: p = 0 */
-            e = nearest_ext(m, ext, next, xm); /* pressed into a wall at the edge: field extended */
+            const int next = ext_count(ext);
+            if (!next) continue;                    /* outside the fluid: p = 0 */
+            e = nearest_ext(m, ext->elem, next, xm); /* pressed into a wall at the edge: field extended */
         }
         double p0 = p_in(f, e, (pl_vec2){a.x + s0 * d.x, a.y + s0 * d.y});
         double p1 = p_in(f, e, (pl_vec2){a.x + s1 * d.x, a.y + s1 * d.y});
@@ -170,11 +185,11 @@ static void edge_force(const struct pl_fluid *f, pl_vec2 a, pl_vec2 b, pl_vec2 c
     }
 }
 
-static void polygon_force_ext(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c, const int *ext, int next,
+static void polygon_force_ext(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c, edge_ext *ext,
                               pl_vec2 *force, double *moment) {
     pl_vec2 F = {0, 0};
     double M = 0;
-    for (int k = 0; k < n; k++) edge_force(f, v[k], v[(k + 1) % n], c, 0, 1, &F, &M, 0, ext, next);
+    for (int k = 0; k < n; k++) edge_force(f, v[k], v[(k + 1) % n], c, 0, 1, &F, &M, 0, ext);
     force->x += F.x;
     force->y += F.y;
     *moment += M;
@@ -182,7 +197,7 @@ static void polygon_force_ext(const struct pl_fluid *f, const pl_vec2 *v, int n,
 
 void pl_fl_polygon_force(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_vec2 c, pl_vec2 *force,
                          double *moment) {
-    polygon_force_ext(f, v, n, c, NULL, 0, force, moment);
+    polygon_force_ext(f, v, n, c, NULL, force, moment);
 }
 
 /* Pressure on the circle in element e: p(theta) = al + be cos(theta) + ga sin(theta). */
@@ -287,7 +302,7 @@ static int circle_in_triangle(const pl_mesh *m, int e, pl_vec2 c, double r, doub
 
 static int cmp_arc(const void *a, const void *b) { return cmp_d(a, b); }
 
-static void disc_force_ext(const struct pl_fluid *f, pl_vec2 c, double r, const int *ext, int next, pl_vec2 *force) {
+static void disc_force_ext(const struct pl_fluid *f, pl_vec2 c, double r, edge_ext *ext, pl_vec2 *force) {
     const pl_mesh *m = &f->mesh;
     pl_vec2 lo = {c.x - r, c.y - r}, hi = {c.x + r, c.y + r};
     int i0, j0, i1, j1;
@@ -336,12 +351,12 @@ static void disc_force_ext(const struct pl_fluid *f, pl_vec2 c, double r, const 
                 circle_coeffs(f, e, c, r, &al, &be, &ga);
                 for (int q = 0; q < na; q++) {
                     arc_force(r, al, be, ga, arcs[q][0], arcs[q][1], &Fx, &Fy);
-                    if (next && nseen < ARC_CAP) { seen[nseen][0] = arcs[q][0]; seen[nseen][1] = arcs[q][1]; }
+                    if (ext && nseen < ARC_CAP) { seen[nseen][0] = arcs[q][0]; seen[nseen][1] = arcs[q][1]; }
                     nseen++;
                 }
             }
         }
-    if (next && nseen <= ARC_CAP) {
+    if (ext && nseen <= ARC_CAP) {
         /* the arcs beyond the mesh boundary: gaps between the arcs inside (round-off gaps
            between neighbouring triangles, below 1e-9 rad, are left out), each integrated with the
            field of the nearest extended element */
@@ -350,8 +365,10 @@ static void disc_force_ext(const struct pl_fluid *f, pl_vec2 c, double r, const 
         for (int q = 0; q <= nseen; q++) {
             double g0 = cur, g1 = q < nseen ? seen[q][0] : 2 * PL_FL_PI;
             if (g1 - g0 > 1e-9) {
+                const int next = ext_count(ext);
+                if (!next) break; /* outside the fluid: p = 0 */
                 double gm = 0.5 * (g0 + g1);
-                int e = nearest_ext(m, ext, next, (pl_vec2){c.x + r * cos(gm), c.y + r * sin(gm)});
+                int e = nearest_ext(m, ext->elem, next, (pl_vec2){c.x + r * cos(gm), c.y + r * sin(gm)});
                 double al, be, ga;
                 circle_coeffs(f, e, c, r, &al, &be, &ga);
                 arc_force(r, al, be, ga, g0, g1, &Fx, &Fy);
@@ -364,7 +381,7 @@ static void disc_force_ext(const struct pl_fluid *f, pl_vec2 c, double r, const 
 }
 
 void pl_fl_disc_force(const struct pl_fluid *f, pl_vec2 c, double r, pl_vec2 *force) {
-    disc_force_ext(f, c, r, NULL, 0, force);
+    disc_force_ext(f, c, r, NULL, force);
 }
 
 /* Pressure force on a disc from its cover pieces (Gauss): p is continuous and linear in each
@@ -427,16 +444,17 @@ static int disc_force_covers(const struct pl_fluid *f, const pl_fl_bodies *b, in
 
 void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i, pl_vec2 *force, double *moment) {
     int sh = b->shape[i];
-    int ext[EXT_MAX];
+    /* a grain pressed into a wall at the mesh's edge, whatever the porosity method and whether
+       or not pieces are cut (drag off, uniform permeability, no consolidation: the thesis's
+       force mode) */
+    edge_ext ext = {.m = &f->mesh, .c = b->pos[i], .r = b->radius[i]};
     if (sh == PL_SHAPE_DISC) {
-        if (!disc_force_covers(f, b, i, force)) {
-            int next = ext_elems(f, i, ext);
-            disc_force_ext(f, b->pos[i], b->radius[i], ext, next, force);
-        }
+        if (!disc_force_covers(f, b, i, force)) disc_force_ext(f, b->pos[i], b->radius[i], &ext, force);
     }
     else if (sh == PL_SHAPE_POLYGON) {
-        int next = ext_elems(f, i, ext);
-        polygon_force_ext(f, &b->verts[b->vert_offset[i]], b->vert_count[i], b->pos[i], ext, next, force, moment);
+        ext.v = &b->verts[b->vert_offset[i]];
+        ext.nv = b->vert_count[i];
+        polygon_force_ext(f, ext.v, ext.nv, b->pos[i], &ext, force, moment);
     }
     else return;
     if (f->par.drag && f->body_cover_start && i < f->cover_bodies) { /* bodies added since: none yet */

@@ -107,6 +107,8 @@ typedef struct pl_fl_cover {
    overlap: its outside part is folded into the mesh); a body reaching deeper crosses the
    boundary as a solid (piston, lid, wall slab: the mesh boundary is its seal, p = 0 beyond). */
 #define PL_FL_EDGE_SLIVER 0.1
+/* At most this many boundary elements share the part of one such grain beyond the boundary. */
+#define PL_FL_EDGE_MAX 16
 
 /* Geometry of the bodies as the fluid sees them (copied or pointed from the world). */
 typedef struct pl_fl_bodies {
@@ -203,6 +205,13 @@ void pl_fl_add_frame_load(const struct pl_fluid *f, double *r);
 /* porosity and permeability (fluid_porosity.c) */
 pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b);
 void pl_fl_update_permeability(struct pl_fluid *f);
+/* Grain pressed into a wall at the mesh's edge (docs/fluid.md §6.1): the boundary elements whose
+   boundary edges the body (disc c, r when v is NULL, else convex polygon v, n, counter-clockwise)
+   crosses, and the body's length on those edges (wt), at most cap of them; returns their number,
+   0 when it crosses no boundary edge or crosses one deeper than PL_FL_EDGE_SLIVER of its
+   thickness (a solid: piston, lid, wall slab). */
+int pl_fl_edge_elements(const pl_mesh *m, pl_vec2 c, double r, const pl_vec2 *v, int n, int32_t *elem, double *wt,
+                        int cap);
 double pl_fl_tri_disc_area(const pl_vec2 t[3], pl_vec2 c, double r);
 double pl_fl_tri_poly_area(const pl_vec2 t[3], const pl_vec2 *v, int n);
 double pl_fl_kc_map(const pl_fl_params *p, double e);

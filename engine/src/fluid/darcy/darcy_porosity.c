@@ -193,68 +193,113 @@ static int boundary_edge(const pl_mesh *m, int e, int q) {
 
 /* Grains pressed into a wall at the mesh's edge (docs/fluid.md §6.1). A contact overlap is the
    soft-contact stand-in for a point contact: the grain does not really reach into the wall, the
-   water surrounds it up to the contact, and it displaces its whole area. When the part of body i
-   beyond the mesh boundary is such a sliver (on every boundary edge it crosses, its depth beyond
-   the edge is at most PL_FL_EDGE_SLIVER of its thickness across the edge), that part's area,
-   A_body - sum of its pieces, is added as pieces flagged outside to the boundary elements whose
-   boundary edges the body crosses, shared by the length of the body on each edge. Forces (Gauss
-   form and the outline integral, which extends the field of those elements beyond the boundary),
-   drag, solid area and the consolidation source then all see the whole grain, as they would if
-   the mesh went on past the wall. A body reaching deeper (piston, lid, wall slab) keeps p = 0
-   beyond the boundary. Returns 0 only when out of memory. */
+   water surrounds it up to the contact, and it displaces its whole area. The body is such a grain
+   when, on every boundary edge it crosses, its depth beyond the edge is at most PL_FL_EDGE_SLIVER
+   of its thickness across the edge. Found from the mesh alone (any porosity method, with or
+   without pieces cut): the boundary elements are met in the order the porosity update meets them
+   (grid cells row by row, an element in the first cell of its box within the range). */
+int pl_fl_edge_elements(const pl_mesh *m, pl_vec2 c, double r, const pl_vec2 *pv, int pn, int32_t *elem, double *wt,
+                        int cap) {
+    pl_vec2 lo = {c.x - r, c.y - r}, hi = {c.x + r, c.y + r};
+    if (pv) {
+        lo = hi = pv[0];
+        for (int k = 1; k < pn; k++) {
+            lo.x = fmin(lo.x, pv[k].x); lo.y = fmin(lo.y, pv[k].y);
+            hi.x = fmax(hi.x, pv[k].x); hi.y = fmax(hi.y, pv[k].y);
+        }
+    }
+    int i0, j0, i1, j1;
+    if (!pl_mesh_grid_range(m, lo, hi, &i0, &j0, &i1, &j1)) return 0;
+    int n = 0;
+    for (int gj = j0; gj <= j1; gj++)
+        for (int gi = i0; gi <= i1; gi++) {
+            size_t cell = (size_t)gj * m->gx + gi;
+            for (int k = m->cell_start[cell]; k < m->cell_start[cell + 1]; k++) {
+                const int e = m->cell_items[k];
+                const double *tb = &m->tri_box[4 * e];
+                if (tb[2] < lo.x || tb[0] > hi.x || tb[3] < lo.y || tb[1] > hi.y) continue;
+                const int ti0 = m->tri_cell0[2 * e], tj0 = m->tri_cell0[2 * e + 1];
+                if (gi != (ti0 > i0 ? ti0 : i0) || gj != (tj0 > j0 ? tj0 : j0)) continue;
+                const int32_t *v = &m->tri[3 * e];
+                double w = 0;
+                for (int q = 0; q < 3; q++) {
+                    pl_vec2 P = m->xy[v[q]], Q = m->xy[v[(q + 1) % 3]];
+                    double ch = chord_body(P, Q, c, r, pv, pn);
+                    if (!(ch > 0) || !boundary_edge(m, e, q)) continue;
+                    double L = hypot(Q.x - P.x, Q.y - P.y);
+                    pl_vec2 nn = {(Q.y - P.y) / L, -(Q.x - P.x) / L}; /* outward */
+                    double out, th;
+                    if (!pv) {
+                        out = (c.x - P.x) * nn.x + (c.y - P.y) * nn.y + r;
+                        th = 2 * r;
+                    } else {
+                        double shi = -INFINITY, slo = INFINITY;
+                        for (int j = 0; j < pn; j++) {
+                            double sj = (pv[j].x - P.x) * nn.x + (pv[j].y - P.y) * nn.y;
+                            shi = fmax(shi, sj);
+                            slo = fmin(slo, sj);
+                        }
+                        out = shi;
+                        th = shi - slo;
+                    }
+                    if (out > PL_FL_EDGE_SLIVER * th) return 0; /* crosses the boundary as a solid */
+                    w += ch;
+                }
+                if (w > 0 && n < cap) {
+                    elem[n] = e;
+                    wt[n] = w;
+                    n++;
+                }
+            }
+        }
+    return n;
+}
+
+/* The part of body i beyond the mesh boundary when it is a grain pressed into a wall at the
+   mesh's edge (pl_fl_edge_elements): its area, A_body - sum of its pieces, is added as pieces
+   flagged outside to the boundary elements whose boundary edges the body crosses, shared by the
+   length of the body on each edge. Forces (Gauss form and the outline integral, which extends the
+   field of those elements beyond the boundary), drag, solid area and the consolidation source
+   then all see the whole grain, as they would if the mesh went on past the wall. A body reaching
+   deeper (piston, lid, wall slab) keeps p = 0 beyond the boundary. With pixel areas the pieces
+   are the pixel counts, so the outside part is A_body less those (a pixel estimate of it).
+   Returns 0 only when out of memory. */
 static int fold_outside(struct pl_fluid *f, const pl_fl_bodies *b, int i, const pl_vec2 *pv, int pn) {
     const pl_mesh *m = &f->mesh;
-    const int k0 = f->body_cover_start[i], k1 = f->ncover;
+    const int k0 = f->body_cover_start[i], k1 = f->ncover; /* body i's pieces are the last ones */
     if (k0 == k1) return 1; /* wholly outside the mesh (or no area): nothing to fold */
+    const int pixel = f->par.porosity_method == 1;
     const pl_vec2 c = b->pos[i];
     const double r = b->radius[i];
     double A = 0;
     if (!pv) A = PL_FL_PI * r * r;
     else
         for (int k = 0; k < pn; k++) A += 0.5 * (pv[k].x * pv[(k + 1) % pn].y - pv[(k + 1) % pn].x * pv[k].y);
+    int32_t el[PL_FL_EDGE_MAX];
+    double w[PL_FL_EDGE_MAX];
+    int n = 0;
+    if (pixel) { /* candidates only so far: first whether it is an edge grain at all */
+        n = pl_fl_edge_elements(m, c, r, pv, pn, el, w, PL_FL_EDGE_MAX);
+        if (n == 0) return 1;
+    }
     double ain = 0;
-    for (int k = k0; k < k1; k++) ain += f->cover[k].area;
+    for (int k = k0; k < k1; k++) {
+        if (!pixel) { ain += f->cover[k].area; continue; }
+        const int32_t *v = &m->tri[3 * f->cover[k].elem];
+        pl_vec2 t[3] = {m->xy[v[0]], m->xy[v[1]], m->xy[v[2]]};
+        ain += pv ? pl_fl_tri_poly_area(t, pv, pn) : pl_fl_tri_disc_area(t, c, r);
+    }
     const double aout = A - ain;
     if (!(aout > 1e-12 * A)) return 1;
+    if (!pixel) n = pl_fl_edge_elements(m, c, r, pv, pn, el, w, PL_FL_EDGE_MAX);
     double wsum = 0;
-    for (int pass = 0; pass < 2; pass++)
-        for (int k = k0; k < k1; k++) {
-            const int e = f->cover[k].elem;
-            const int32_t *v = &m->tri[3 * e];
-            double w = 0;
-            for (int q = 0; q < 3; q++) {
-                pl_vec2 P = m->xy[v[q]], Q = m->xy[v[(q + 1) % 3]];
-                double ch = chord_body(P, Q, c, r, pv, pn);
-                if (!(ch > 0) || !boundary_edge(m, e, q)) continue;
-                if (pass == 0) {
-                    double L = hypot(Q.x - P.x, Q.y - P.y);
-                    pl_vec2 n = {(Q.y - P.y) / L, -(Q.x - P.x) / L}; /* outward */
-                    double out, th;
-                    if (!pv) {
-                        out = (c.x - P.x) * n.x + (c.y - P.y) * n.y + r;
-                        th = 2 * r;
-                    } else {
-                        double hi = -INFINITY, lo = INFINITY;
-                        for (int j = 0; j < pn; j++) {
-                            double s = (pv[j].x - P.x) * n.x + (pv[j].y - P.y) * n.y;
-                            hi = fmax(hi, s);
-                            lo = fmin(lo, s);
-                        }
-                        out = hi;
-                        th = hi - lo;
-                    }
-                    if (out > PL_FL_EDGE_SLIVER * th) return 1; /* crosses the boundary as a solid */
-                }
-                w += ch;
-            }
-            if (pass == 0) wsum += w;
-            else if (!(wsum > 0)) return 1;
-            else if (w > 0) {
-                double a = aout * w / wsum;
-                f->solid[e] += a;
-                if (!push_cover(f, i, e, a, 1)) return 0;
-            }
-        }
+    for (int k = 0; k < n; k++) wsum += w[k];
+    if (!(wsum > 0)) return 1;
+    for (int k = 0; k < n; k++) {
+        double a = aout * w[k] / wsum;
+        if (!pixel) f->solid[el[k]] += a; /* pixel areas: added after the pixel pass */
+        if (!push_cover(f, i, el[k], a, 1)) return 0;
+    }
     return 1;
 }
 
@@ -336,7 +381,7 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
                     if (!push_cover(f, i, e, a, 0)) return PL_ERR_NOMEM;
                 }
             }
-        if (f->par.porosity_method == 0 && !fold_outside(f, b, i, pv, pn)) return PL_ERR_NOMEM;
+        if (!fold_outside(f, b, i, pv, pn)) return PL_ERR_NOMEM;
     }
     f->body_cover_start[b->n] = f->ncover;
     f->cover_bodies = b->n;
@@ -362,12 +407,17 @@ pl_status pl_fl_update_porosity(struct pl_fluid *f, const pl_fl_bodies *b) {
         }
         int32_t *cnt = f->pix_cnt, *fill = f->pix_fill, *pair_of = f->pix_pair;
         memset(cnt, 0, sizeof(int32_t) * (size_t)(m->ne + 1));
-        for (int k = 0; k < f->ncover; k++) cnt[f->cover[k].elem + 1]++;
+        /* pieces flagged outside (beyond the mesh boundary) have their area already */
+        for (int k = 0; k < f->ncover; k++)
+            if (!f->cover[k].outside) cnt[f->cover[k].elem + 1]++;
         for (int e = 0; e < m->ne; e++) cnt[e + 1] += cnt[e];
         memcpy(fill, cnt, sizeof(int32_t) * (size_t)m->ne);
-        for (int k = 0; k < f->ncover; k++) pair_of[fill[f->cover[k].elem]++] = k;
+        for (int k = 0; k < f->ncover; k++)
+            if (!f->cover[k].outside) pair_of[fill[f->cover[k].elem]++] = k;
         for (int e = 0; e < m->ne; e++)
             if (cnt[e + 1] > cnt[e]) pixel_element(f, b, e, cnt[e], cnt[e + 1], pair_of);
+        for (int k = 0; k < f->ncover; k++)
+            if (f->cover[k].outside) f->solid[f->cover[k].elem] += f->cover[k].area;
     }
     /* void ratio (eq. 3.9) with the thesis's clamp 0.01 A <= A_s <= 0.99 A */
     for (int e = 0; e < m->ne; e++) {
