@@ -1,5 +1,6 @@
 #include "vtk_series.h"
 #include "porelab/fluid.h"
+#include "render/atomic_file.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -31,11 +32,14 @@ pl_vtk_series *pl_vtk_series_open(const char *dir, char *err, size_t errlen) {
     return s;
 }
 
-/* Writes DIR/NAME.pvd listing vtk/frame_K_NAME.vtu for every frame so far. */
+/* Writes DIR/NAME.pvd listing vtk/frame_K_NAME.vtu for every frame so far (under a temporary
+   name, renamed into place when whole: render/atomic_file.h). */
 static int write_pvd(const pl_vtk_series *s, const char *name, char *err, size_t errlen) {
     char path[PATH_MAX + 32];
     snprintf(path, sizeof path, "%s/%s.pvd", s->dir, name);
-    FILE *f = fopen(path, "w");
+    pl_atomic_file a;
+    if (pl_atomic_file_begin(&a, path, err, errlen)) return -1;
+    FILE *f = fopen(a.tmp_path, "w");
     if (!f) {
         snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
         return -1;
@@ -44,13 +48,20 @@ static int write_pvd(const pl_vtk_series *s, const char *name, char *err, size_t
     for (int k = 0; k < s->n; k++)
         fprintf(f, "<DataSet timestep=\"%.9g\" file=\"vtk/frame_%06d_%s.vtu\"/>\n", s->times[k], k, name);
     fprintf(f, "</Collection>\n</VTKFile>\n");
+    errno = 0;
+    int ok = !ferror(f);
+    int e = errno;
     if (fclose(f) != 0) {
-        snprintf(err, errlen, "error writing %s", path);
-        return -1;
+        ok = 0;
+        if (!e) e = errno;
     }
-    return 0;
+    if (!ok) snprintf(err, errlen, "cannot write %s: %s", path, e ? strerror(e) : "write error");
+    return pl_atomic_file_end(&a, ok, err, errlen);
 }
 
+/* The frame's .vtu files come whole from the engine's file writer (a temporary name renamed
+   into place: lua/file_writer.c); the .pvd collections are rewritten at every frame here, the
+   same way (write_pvd). */
 int pl_vtk_series_add(pl_vtk_series *s, pl_world *w, char *err, size_t errlen) {
     char prefix[PATH_MAX + 32];
     snprintf(prefix, sizeof prefix, "%s/vtk/frame_%06d", s->dir, s->n);

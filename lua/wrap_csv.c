@@ -206,14 +206,18 @@ int pl_lua_csv_new(lua_State *L)
     memset(c, 0, sizeof *c);
     c->fd = -1;
     luaL_setmetatable(L, PL_LUA_CSV_MT);
-    pl_lua_output_path(L, path, c->path, sizeof c->path, fn);
-    if (reserve(c, need) != 0) pl_lua_error(L, "%s: out of memory", fn);
-    c->fd = open(c->path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (c->fd < 0) {
-        int e = errno;
-        free(c->buf);
-        c->buf = NULL;
-        pl_lua_error(L, "%s: cannot write '%s': %s", fn, c->path, strerror(e));
+    /* the one checked open for files a scene writes (inside the output folder, never through
+       a symbolic link); the rows are then written with write(2) on its descriptor */
+    FILE *fp = pl_lua_output_fopen(L, path, "w", c->path, sizeof c->path, fn);
+    if (!fp) pl_lua_error(L, "%s: cannot write '%s': %s", fn, c->path, strerror(errno));
+    c->fd = fcntl(fileno(fp), F_DUPFD_CLOEXEC, 0);
+    int dup_errno = errno;
+    fclose(fp); /* nothing buffered in it */
+    if (c->fd < 0) pl_lua_error(L, "%s: cannot write '%s': %s", fn, c->path, strerror(dup_errno));
+    if (reserve(c, need) != 0) {
+        close(c->fd);
+        c->fd = -1;
+        pl_lua_error(L, "%s: out of memory", fn);
     }
     c->columns = n;
     c->last_flush = monotonic_seconds();

@@ -45,4 +45,19 @@ grep -q "ran to completion" "$out/csv_imperative.log" && bad "csv_imperative: re
 run big_frame 1 "cannot write .*frame_000000.png.*File too large" ignore
 [ -e "$out/big_frame/frame_000000.png" ] && bad "big_frame: a truncated frame_000000.png was left"
 grep -q "no frames were written" "$out/big_frame.log" || bad "big_frame: the truncated frame was counted"
+# a VTK collection that outgrows the limit (--vtk): the .pvd files are rewritten at every frame;
+# what stays under its final name must be a whole file
+dir=$out/long_pvd
+rm -rf "$dir"
+mkdir -p "$dir"
+( trap '' XFSZ; ulimit -f 16; exec "$exe" run "$faults/long_pvd.lua" --quiet --vtk --out "$dir" ) > "$dir.log" 2>&1
+rc=$?
+echo "--- long_pvd: exit $rc"
+cat "$dir.log"
+[ "$rc" = 1 ] || bad "long_pvd: expected exit 1, got $rc"
+grep -Eq "cannot write .*(bodies|contacts).pvd: File too large" "$dir.log" || bad "long_pvd: the message does not name the .pvd file and the reason"
+for f in "$dir"/*.pvd; do
+  [ -e "$f" ] || { bad "long_pvd: no .pvd left"; continue; }
+  tail -c 12 "$f" | grep -q "</VTKFile>" || bad "long_pvd: a truncated $f was left ($(wc -c < "$f") bytes)"
+done
 exit $fail
