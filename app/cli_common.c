@@ -76,6 +76,17 @@ void pl_cli_print_scene_error(const pl_opts *o, pl_scene *s)
         fprintf(stderr, "%s\n", pl_scene_traceback(s));
 }
 
+int pl_cli_scene_limits(const pl_opts *o, pl_scene *s)
+{
+    double cpu = 0, mem = 0;
+    if (limit_option(o, "--max-cpu", 0.001, PL_SCENE_MAX_CPU_LIMIT, "a number of seconds", &cpu) ||
+        limit_option(o, "--max-memory", PL_SCENE_MIN_MEMORY, PL_SCENE_MAX_MEMORY_LIMIT,
+                     "a number of megabytes", &mem))
+        return -1;
+    if (s) pl_scene_set_limits(s, cpu, mem); /* 0 keeps the default (none with --trust) */
+    return 0;
+}
+
 pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir)
 {
     pl_scene_options so = {o->positional[0], out_dir, pl_opts_has(o, "--trust")};
@@ -84,14 +95,10 @@ pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir)
         fprintf(stderr, "porelab: out of memory while creating the Lua state\n");
         return NULL;
     }
-    double cpu = 0, mem = 0;
-    if (limit_option(o, "--max-cpu", 0.001, PL_SCENE_MAX_CPU_LIMIT, "a number of seconds", &cpu) ||
-        limit_option(o, "--max-memory", PL_SCENE_MIN_MEMORY, PL_SCENE_MAX_MEMORY_LIMIT,
-                     "a number of megabytes", &mem)) {
+    if (pl_cli_scene_limits(o, s) != 0) {
         pl_scene_destroy(&s);
         return NULL;
     }
-    pl_scene_set_limits(s, cpu, mem); /* 0 keeps the default (none with --trust) */
     pl_scene_register_chart(s);
     if (pl_scene_load(s) != 0) {
         pl_cli_print_scene_error(o, s);

@@ -15,6 +15,10 @@ int pl_cli_require_scene(const pl_opts *o);
 /* Default output folder for a scene: out/<scene-name>. */
 void pl_cli_default_out(const char *scene_path, char *out, size_t n);
 
+/* Reads --max-cpu and --max-memory and sets them on s (when s is not NULL; absent options keep
+ * the scene's defaults). Prints the error and returns -1 when one is out of range. */
+int pl_cli_scene_limits(const pl_opts *o, pl_scene *s);
+
 /* Creates and runs the scene; on failure prints "porelab: <message>" (plus the Lua
  * traceback when --traceback was given) and returns NULL. */
 pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir);

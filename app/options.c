@@ -25,9 +25,6 @@ static int own_count(const pl_command_help *cmd)
 
 static int has_trust(const pl_command_help *cmd)
 {
-    /* the live window creates its scenes itself (app/window/window_sim.c) and does not take
-     * these options yet: it runs with the sandbox's default limits */
-    if (strcmp(cmd->command, "view") == 0) return 0;
     for (int i = 0; cmd->specs[i].name; i++)
         if (strcmp(cmd->specs[i].name, "--trust") == 0) return 1;
     return 0;

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "options.h"
 #include "window.h"
+#include "cli_common.h"
 
 static const pl_opt_spec view_specs[] = {
     {"--size", NULL, "WxH", "window size in pixels (default: the scene's, else 800x600)"},
@@ -37,5 +38,6 @@ int pl_cmd_view(int argc, char **argv)
         pl_opts_print_help(stderr, &view_help);
         return PL_EXIT_USAGE;
     }
+    if (pl_cli_scene_limits(&o, NULL) != 0) return PL_EXIT_USAGE;
     return pl_window_main(&o);
 }

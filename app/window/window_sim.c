@@ -135,6 +135,12 @@ static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
         snprintf(sim->error, sizeof sim->error, "out of memory while creating the Lua state");
         return -1;
     }
+    /* --max-cpu / --max-memory as for `porelab run` (checked when the window started) */
+    if (pl_cli_scene_limits(sim->o, s) != 0) {
+        snprintf(sim->error, sizeof sim->error, "invalid --max-cpu or --max-memory (see the terminal)");
+        pl_scene_destroy(&s);
+        return -1;
+    }
     struct timespec mt;
     get_mtime(sim->o->positional[0], &mt);
     pl_scene_register_chart(s);
@@ -255,6 +261,8 @@ static int hook_frame(pl_wsim *sim)
     if (pl_scene_call_hook(sim->s, "on_frame", sim->next_k) != 0) {
         snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(sim->s));
         sim->stopped = 1;
+        /* the window shows it; the terminal keeps it */
+        fprintf(stderr, "porelab: stopped: %s\n", sim->error);
         return -1;
     }
     sim->next_k++;

@@ -347,3 +347,16 @@ add_test(NAME cli_still_from_state
           -DSTEPS=600 -DEVERY=0.03 -DAT=0.1 -P ${PL_CLI_DIR}/still_from_state.cmake
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(cli_still_from_state PROPERTIES LABELS cli TIMEOUT 120)
+
+# The live window takes the sandbox limits too (issue 13 item 4): the scene file's endless loop
+# is stopped while the window loads it (before any window opens, so no display is needed), and
+# the options are range-checked like run's. tests/gl/test_window_limits.sh stops a hook's loop
+# in the open window.
+if(PL_HAVE_WINDOW)
+  pl_sec_test(view_cpu_loop RC 1 ARGS view ${PL_SEC}/cpu_loop.lua --max-cpu 1 --out ${PL_SEC_OUT}/view_cpu_loop
+    MATCH "^porelab: tests/cli/security/cpu_loop.lua:3: the scene ran out of CPU time: more than 1 s running the scene file \\(--max-cpu")
+  pl_sec_test(view_mem_double RC 1 ARGS view ${PL_SEC}/mem_double.lua --max-memory 64 --out ${PL_SEC_OUT}/view_mem
+    MATCH "mem_double.lua:4: out of memory: the scene's Lua data would pass the limit of 64 MB \\(--max-memory")
+  pl_sec_test(view_max_cpu_range RC 2 ARGS view ${PL_SEC}/cpu_loop.lua --max-cpu 0
+    MATCH "porelab view: --max-cpu must be a number of seconds in \\[0.001, 1e\\+07\\] \\(got '0'\\)")
+endif()

@@ -36,6 +36,10 @@ if(TARGET porelab_gl)
     add_test(NAME gl_window_scenes COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/gl/test_window_scenes.sh
       $<TARGET_FILE:porelab> $<TARGET_FILE:gl_psnr> ${CMAKE_SOURCE_DIR} ${PL_GL_OUT}/scenes)
     set_tests_properties(gl_window_scenes PROPERTIES LABELS gl TIMEOUT 400)
+    # the window's sandbox limits: a hook's endless loop stopped with its line (issue 13 item 4)
+    add_test(NAME gl_window_limits COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/gl/test_window_limits.sh
+      $<TARGET_FILE:porelab> ${CMAKE_SOURCE_DIR} ${PL_GL_OUT}/limits)
+    set_tests_properties(gl_window_limits PROPERTIES LABELS gl TIMEOUT 60)
   else()
     message(STATUS "gl_window_xvfb test skipped (needs the window, libx11-dev, xvfb, xdotool)")
   endif()
