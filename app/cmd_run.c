@@ -71,16 +71,27 @@ static int frame_count(const run_ctx *c)
     return c->gfw ? pl_gl_frames_count(c->gfw) : c->fw ? pl_frame_writer_count(c->fw) : 0;
 }
 
-static void print_stop(const run_ctx *c, const char *why)
+static void print_stop_at(const run_ctx *c, const char *where, const char *why)
 {
-    fprintf(stderr, "porelab: run stopped at t = %.6g s (step %lld of %lld): %s\n",
-            pl_world_time(c->w), steps_done(c), c->plan->total_steps, why);
+    fprintf(stderr, "porelab: %s%srun stopped at t = %.6g s (step %lld of %lld): %s\n",
+            where ? where : "", where ? ": " : "", pl_world_time(c->w), steps_done(c),
+            c->plan->total_steps, why);
     int n = frame_count(c);
     if (n > 0)
         fprintf(stderr, "porelab: %d frame%s kept in %s/ (the last at t = %.6g s)\n", n,
                 n == 1 ? "" : "s", c->out_dir, c->last_frame_time);
     else
         fprintf(stderr, "porelab: no frames were written\n");
+}
+
+static void print_stop(const run_ctx *c, const char *why) { print_stop_at(c, NULL, why); }
+
+/* The world stopped (an engine error while stepping or preparing a frame: the fluid's set-up at
+ * the first update, a guard against instability): named with the line of the scene's return
+ * that handed the world over, so that the message points at the scene the user wrote. */
+static void print_world_stop(const run_ctx *c)
+{
+    print_stop_at(c, pl_scene_result_location(c->s), pl_world_last_error(c->w));
 }
 
 /* Writes the next frame and calls on_frame; 0 or -1 (after reporting). */
@@ -93,7 +104,7 @@ static int frame(run_ctx *c)
         return -1;
     }
     if (pl_render_prepare(c->w, c->ropt, c->vtk != NULL) != PL_OK) {
-        print_stop(c, pl_world_last_error(c->w));
+        print_world_stop(c);
         return -1;
     }
     if ((c->gfw ? pl_gl_frames_add(c->gfw, c->w, c->ropt, err, sizeof err)
@@ -142,7 +153,7 @@ static int step_loop(run_ctx *c, pl_progress *prog)
             pl_status st = pl_world_step(c->w, (int)n);
             if (st != PL_OK) {
                 pl_progress_finish(prog);
-                print_stop(c, pl_world_last_error(c->w));
+                print_world_stop(c);
                 return -1;
             }
             double spent = pl_wall_seconds() - t0;

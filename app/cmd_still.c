@@ -86,8 +86,8 @@ static pl_status step_like_run(const pl_opts *o, pl_scene *s, pl_world *w, const
         if (n > INT_MAX) n = INT_MAX;
         pl_status st = pl_world_step(w, (int)n);
         if (st != PL_OK) {
-            fprintf(stderr, "porelab: run stopped at t = %.6g s before reaching %g s: %s\n",
-                    pl_world_time(w), at, pl_world_last_error(w));
+            fprintf(stderr, "porelab: %s: run stopped at t = %.6g s before reaching %g s: %s\n",
+                    pl_scene_result_location(s), pl_world_time(w), at, pl_world_last_error(w));
             return st;
         }
     }
@@ -154,7 +154,7 @@ int pl_cmd_still(int argc, char **argv)
         pl_draw_list overlay;
         pl_draw_list_init(&overlay);
         if (rc != PL_EXIT_USAGE && st == PL_OK && pl_render_prepare(w, &ropt, 0) != PL_OK) {
-            fprintf(stderr, "porelab: %s\n", pl_world_last_error(w));
+            fprintf(stderr, "porelab: %s: %s\n", pl_scene_result_location(s), pl_world_last_error(w));
         } else if (rc != PL_EXIT_USAGE && st == PL_OK && pl_cli_overlay(&o, s, &overlay, &ropt) == 0) {
             if ((use_gl ? pl_gl_cli_still(w, &ropt, file, err, sizeof err)
                         : pl_render_to_file(w, &ropt, file, err, sizeof err)) != 0) {

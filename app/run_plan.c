@@ -27,11 +27,11 @@ static int check_length(const pl_scene *s, const pl_run_plan *p, double duration
         fprintf(stderr, "porelab: %s: the run would take %.3g steps (%s: %.6g s at dt = %.6g "
                         "s); the valid range is 0..%.0e steps: give a larger time step "
                         "(world{dt = ...}) or a shorter run\n",
-                pl_scene_path(s), duration / p->dt, p->length_from, duration, p->dt,
+                pl_scene_result_location(s), duration / p->dt, p->length_from, duration, p->dt,
                 (double)PL_MAX_STEPS);
     else
         fprintf(stderr, "porelab: %s: %s = %lld steps is out of range (0..%.0e steps)\n",
-                pl_scene_path(s), p->length_from, p->total_steps, (double)PL_MAX_STEPS);
+                pl_scene_result_location(s), p->length_from, p->total_steps, (double)PL_MAX_STEPS);
     return usage ? PL_EXIT_USAGE : PL_EXIT_FAIL;
 }
 
@@ -61,7 +61,7 @@ int pl_run_plan_make(const pl_opts *o, pl_scene *s, pl_world *w, pl_run_plan *p)
     p->dt = pl_world_dt(w);
     if (!(p->dt > 0) || !isfinite(p->dt)) {
         const char *why = pl_world_last_error(w);
-        fprintf(stderr, "porelab: %s: no usable time step: %s\n", pl_scene_path(s),
+        fprintf(stderr, "porelab: %s: no usable time step: %s\n", pl_scene_result_location(s),
                 why[0] ? why
                        : "no dynamic body to take the automatic step from; give world{dt = ...}");
         return PL_EXIT_FAIL;
@@ -112,7 +112,7 @@ int pl_run_plan_make(const pl_opts *o, pl_scene *s, pl_world *w, pl_run_plan *p)
     if (frames > INT_MAX) {
         fprintf(stderr, "porelab: %s: the run would draw %lld frames (frames from %s); the "
                         "valid range is 1..%d frames: draw fewer (--fps, --every)\n",
-                pl_scene_path(s), frames, p->frames_from, INT_MAX);
+                pl_scene_result_location(s), frames, p->frames_from, INT_MAX);
         return strncmp(p->frames_from, "--", 2) == 0 ? PL_EXIT_USAGE : PL_EXIT_FAIL;
     }
     return 0;
@@ -158,6 +158,6 @@ int pl_run_plan_check_view(const pl_scene *s, const pl_render_options *o)
     if (ok) return 0;
     fprintf(stderr, "porelab: %s: render: camera {%g, %g, %g, %g} is %g x %g m; the valid "
                     "range is %g..%g m each side, corners within +-%g m\n",
-            pl_scene_path(s), v[0], v[1], v[2], v[3], wx, wy, lo, hi, far);
+            pl_scene_result_location(s), v[0], v[1], v[2], v[3], wx, wy, lo, hi, far);
     return PL_EXIT_FAIL;
 }

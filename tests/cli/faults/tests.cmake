@@ -25,17 +25,17 @@ endfunction()
 set(steps_re "the run would take 1e\\+22 steps \\(run.t_end: 1 s at dt = 1e-22 s\\); the valid range is 0..1e\\+15 steps")
 pl_faults_test(faults_tiny_dt_run RC 1
   ARGS run ${PL_FAULTS}/tiny_dt.lua --quiet --out ${PL_CLI_OUT}/faults_tiny_dt
-  MATCH "^porelab: tests/cli/faults/tiny_dt.lua: ${steps_re}")
+  MATCH "^porelab: tests/cli/faults/tiny_dt.lua:6: ${steps_re}")
 pl_faults_test(faults_tiny_dt_info RC 1 ARGS info ${PL_FAULTS}/tiny_dt.lua
-  MATCH "tiny_dt.lua: ${steps_re}")
+  MATCH "tiny_dt.lua:6: ${steps_re}")
 pl_faults_test(faults_tiny_dt_308_info RC 1 ARGS info ${PL_FAULTS}/tiny_dt_308.lua
-  MATCH "tiny_dt_308.lua: the run would take 1e\\+308 steps \\(default: 1 s at dt = 1e-308 s\\); the valid range is 0..1e\\+15 steps")
+  MATCH "tiny_dt_308.lua:5: the run would take 1e\\+308 steps \\(default: 1 s at dt = 1e-308 s\\); the valid range is 0..1e\\+15 steps")
 pl_faults_test(faults_tiny_dt_308_run RC 1
   ARGS run ${PL_FAULTS}/tiny_dt_308.lua --quiet --out ${PL_CLI_OUT}/faults_tiny_dt_308
-  MATCH "tiny_dt_308.lua: the run would take 1e\\+308 steps")
+  MATCH "tiny_dt_308.lua:5: the run would take 1e\\+308 steps")
 pl_faults_test(faults_until_huge RC 2
   ARGS run ${PL_FAULTS}/plain.lua --until 1e300 --quiet --out ${PL_CLI_OUT}/faults_until
-  MATCH "plain.lua: the run would take 1e\\+303 steps \\(--until: 1e\\+300 s at dt = 0.001 s\\)")
+  MATCH "plain.lua:5: the run would take 1e\\+303 steps \\(--until: 1e\\+300 s at dt = 0.001 s\\)")
 # a frame rate so low that the next frame is beyond any step count (the frame loop never ended)
 pl_faults_test(faults_fps_tiny RC 0
   ARGS run ${PL_FAULTS}/plain.lua --fps 1e-300 --steps 10 --out ${PL_CLI_OUT}/faults_fps
@@ -44,7 +44,7 @@ pl_faults_test(faults_still_at_huge RC 1
   ARGS still ${PL_FAULTS}/plain.lua --at 1e300 -o ${PL_CLI_OUT}/faults_at.png
        --out ${PL_CLI_OUT}/faults_at
   MATCH "--at 1e\\+300 s is 1e\\+303 steps of dt = 0.001 s after the start; the valid range is up to 1e\\+15 steps")
-set(camera_re "tiny_camera.lua: render: camera \\{0, 0, 1e-300, 1e-300\\} is 1e-300 x 1e-300 m; the valid range is 1e-09..1e\\+09 m each side")
+set(camera_re "tiny_camera.lua:6: render: camera \\{0, 0, 1e-300, 1e-300\\} is 1e-300 x 1e-300 m; the valid range is 1e-09..1e\\+09 m each side")
 foreach(cmd run still info)
   set(extra)
   if(cmd STREQUAL "run")
