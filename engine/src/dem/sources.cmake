@@ -2,6 +2,7 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/material.c
   src/dem/body.c
   src/dem/neighbor.c
+  src/dem/crowding.c
   src/dem/contact_polygon.c
   src/dem/contact_dispatch.c
   src/dem/integrate.c

@@ -200,6 +200,8 @@ int pl__ensure_body_capacity(pl_world *w, int need);
 
 /* Neighbour list */
 pl_status pl__neighbor_update(pl_world *w);
+/* Set-up check: many bodies piled on one spot (dem/crowding.c) */
+pl_status pl__check_crowding(pl_world *w);
 void pl__neighbor_mark_dirty(pl_world *w);
 
 /* Forces (narrow phase). Polygon laws may raise w->worst_overlap_ratio themselves. */

@@ -127,6 +127,10 @@ pl_status pl_world_step(pl_world *w, int nsteps) {
     if (w->dt <= 0 || !isfinite(w->dt))
         return pl__error(w, PL_ERR_STATE, "step: no valid time step (add a dynamic body, or set dt > 0)");
     if (w->pair_params_dirty) pl__update_pair_params(w);
+    if (w->classify_dirty) { /* bodies added or changed: not piled on one spot */
+        pl_status st = pl__check_crowding(w);
+        if (st != PL_OK) return st;
+    }
     if (!w->energy_initialised) init_energy_reference(w);
     const double dt = w->dt;
     for (int s = 0; s < nsteps; s++) {
