@@ -6,6 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 
+/* Largest coordinate of an overlay point (m, or px in pixel space): the camera's reach
+   (PL_VIEW_MAX_COORD in run_plan.h). */
+#define PL_OVERLAY_MAX_COORD 1e12
+
 typedef struct overlay_target {
     pl_scene *s;
     pl_draw_list *dl;
@@ -18,6 +22,19 @@ static const char *const item_fields[] = {"line", "polygon", "circle", "arrow", 
 static const char *const kinds[] = {"line", "polygon", "circle", "arrow", "text", NULL};
 
 /* Reads the list of points in field (at least min of them) into pts (max cap). */
+/* A point of an item: finite and within the reach of a camera (cairo cannot draw NaN). */
+static void check_point(lua_State *L, const char *what, const char *field, pl_vec2 p)
+{
+    if (isfinite(p.x) && isfinite(p.y) && fabs(p.x) <= PL_OVERLAY_MAX_COORD && fabs(p.y) <= PL_OVERLAY_MAX_COORD)
+        return;
+    char msg[256]; /* lua_pushfstring knows no %g */
+    snprintf(msg, sizeof msg, "%s: %s must be a point with finite coordinates within +-%g (got {%g, %g})", what,
+             field, PL_OVERLAY_MAX_COORD, p.x, p.y);
+    luaL_error(L, "%s", msg);
+}
+
+enum { MAX_POINTS = 4096 };
+
 static int read_points(lua_State *L, int t, const char *what, const char *field, pl_vec2 *pts,
                        int cap, int min)
 {
@@ -29,6 +46,9 @@ static int read_points(lua_State *L, int t, const char *what, const char *field,
         lua_geti(L, -1, i + 1);
         if (!pl_lua_to_vec2(L, -1, &pts[i]))
             luaL_error(L, "%s: %s[%d] must be a point {x, y}", what, field, i + 1);
+        char f[64];
+        snprintf(f, sizeof f, "%s[%d]", field, i + 1);
+        check_point(L, what, f, pts[i]);
         lua_pop(L, 1);
     }
     lua_pop(L, 1);
@@ -45,7 +65,7 @@ static pl_rgba item_color(lua_State *L, int t, const char *what, const char *fie
     return def;
 }
 
-enum { MAX_POINTS = 4096 };
+
 
 /* One overlay item at index t, e.g. {line = {{0, 1}, {2, 1}}, color = "#1f77b4"}. */
 static void add_item(lua_State *L, int t, int index, pl_draw_list *dl)
@@ -81,8 +101,9 @@ static void add_item(lua_State *L, int t, int index, pl_draw_list *dl)
         }
     } else if (kind == 2) { /* circle */
         pl_vec2 c = pl_lua_field_vec2(L, t, what, "circle", (pl_vec2){0, 0});
+        check_point(L, what, "circle", c);
         double r = pl_lua_field_number(L, t, what, "radius", 0);
-        PL_LUA_CHECK(L, r > 0 && isfinite(r), what, "radius", "> 0 (m, or px in pixel space)", r);
+        PL_LUA_CHECK(L, r > 0 && r <= PL_OVERLAY_MAX_COORD, what, "radius", "> 0 and at most 1e12 (m, or px in pixel space)", r);
         pl_style st = pl_lua_has_field(L, t, "fill")
                           ? pl_style_fill_stroke(item_color(L, t, what, "fill", color), color,
                                                  width)
@@ -96,6 +117,7 @@ static void add_item(lua_State *L, int t, int index, pl_draw_list *dl)
         const char *text = pl_lua_field_string(L, t, what, "text", "");
         if (!pl_lua_has_field(L, t, "at")) luaL_error(L, "%s: at is required (a point {x, y})", what);
         pl_vec2 at = pl_lua_field_vec2(L, t, what, "at", (pl_vec2){0, 0});
+        check_point(L, what, "at", at);
         float size = (float)pl_lua_field_number(L, t, what, "size", 14);
         PL_LUA_CHECK(L, size > 0 && size <= 500, what, "size", "in (0, 500] px", size);
         static const char *const anchors[] = {"left", "center", "right", NULL};

@@ -10,8 +10,10 @@
 # made nasty, lines dropped, duplicated or truncated, field names misspelt, statements
 # inserted), all from a fixed seed, so a case name (m0042_demo.lua) is the same case on every
 # machine. Each case runs as
-#     cd WORKDIR/cases/NAME/cwd && porelab run ../scene/NAME.lua --steps 50 --out out -q
-# under `timeout` (wall budget) and ulimit -t/-v (CPU seconds, virtual memory), with cwd,
+#     cd WORKDIR/cases/NAME/cwd && porelab run ../scene/NAME.lua --steps 50 --out out -q \
+#         --max-cpu HALF_THE_CPU_BUDGET
+# (so that a scene's own endless loop is stopped by porelab, with its line, before the limits
+# below) under `timeout` (wall budget) and ulimit -t/-v (CPU seconds, virtual memory), with cwd,
 # HOME and TMPDIR empty folders of its own. A case fails when
 #   SIGNAL   the exit code is >= 128 (a crash, or killed by the CPU limit)
 #   HANG     it ran past its wall budget
@@ -39,7 +41,7 @@ if [ "${1:-}" = "--one" ]; then
   t0=$(date +%s)
   ( cd "$d/cwd" && ulimit -t "$cpu" && ulimit -v "$mem" &&
     HOME="$d/home" TMPDIR="$d/home" exec timeout -k 2 "$budget" "$exe" run "../scene/$name" \
-      --steps 50 --out out -q ) >"$d/stdout" 2>"$d/stderr" </dev/null
+      --steps 50 --out out -q --max-cpu "$(( (cpu + 1) / 2 ))" ) >"$d/stdout" 2>"$d/stderr" </dev/null
   rc=$?
   t1=$(date +%s)
   status=ok detail=""

@@ -1,4 +1,3 @@
--- nasty: an endless loop (issue 13 item 5: no CPU limit yet)
+-- nasty: an endless loop (stopped by --max-cpu with its line; the fuzz driver passes half its CPU budget)
 -- fuzz-set: long
--- fuzz-expect: fail (issue 13 item 5: no CPU limit; killed by ulimit -t / timeout)
 while true do end

@@ -1,5 +1,4 @@
 -- nasty: write_vtk into '.' (issue 13 item 4)
--- fuzz-expect: fail (issue 13 item 4: w:write_vtk(".") writes <outdir>_bodies.vtu beside the output folder)
 local w = porelab.world { gravity = { 0, -9.81 } }
 local m = w:material { name = "sand", density = 2650, kn = 1e6, friction = 0.5 }
 w:disc { center = { 0, 0 }, radius = 0.1, material = m }

@@ -1,6 +1,5 @@
 -- nasty: a packing lattice of tiny radius (issue 13 item 12: 3 GB, no capacity check)
 -- fuzz-set: long
--- fuzz-expect: fail (issue 13 item 12: packing.lattice allocates without a capacity check)
 local packing = require 'porelab.packing'
 local w = porelab.world {}
 local m = w:material { name = 'sand', density = 2650, kn = 1e6 }
