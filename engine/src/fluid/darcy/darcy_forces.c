@@ -23,9 +23,11 @@
 #define BP_CAP 256
 #define ARC_CAP 512
 
-/* Elements whose field is extended beyond the mesh boundary for a body (pl_fl_edge_elements:
-   none for a body inside the mesh or one crossing the boundary as a solid), found the first time
-   a piece of its outline lies beyond the boundary; NULL: p = 0 beyond the boundary. */
+/* Elements whose field is extended beyond the mesh boundary for a body: those its pieces flagged
+   outside were folded into when pieces were cut for it, else (no pieces: drag off, uniform
+   permeability, no consolidation) pl_fl_edge_elements, found the first time a piece of its
+   outline lies beyond the boundary. None for a body inside the mesh or one crossing the
+   boundary as a solid; NULL: p = 0 beyond the boundary. */
 typedef struct edge_ext {
     const pl_mesh *m;
     pl_vec2 c;
@@ -448,6 +450,14 @@ void pl_fl_body_force(const struct pl_fluid *f, const pl_fl_bodies *b, int i, pl
        or not pieces are cut (drag off, uniform permeability, no consolidation: the thesis's
        force mode) */
     edge_ext ext = {.m = &f->mesh, .c = b->pos[i], .r = b->radius[i]};
+    if (f->body_cover_start && i < f->cover_bodies) {
+        /* pieces were cut for the body: the elements its outside pieces were folded into, so that
+           the force and the consolidation source use the same pieces (also while they are
+           lagged, FLUID_POROSITY_TIMESTEPS: the coupling stays work-consistent) */
+        ext.found = 1;
+        for (int k = f->body_cover_start[i]; k < f->body_cover_start[i + 1]; k++)
+            if (f->cover[k].outside && ext.n < PL_FL_EDGE_MAX) ext.elem[ext.n++] = f->cover[k].elem;
+    }
     if (sh == PL_SHAPE_DISC) {
         if (!disc_force_covers(f, b, i, force)) disc_force_ext(f, b->pos[i], b->radius[i], &ext, force);
     }
