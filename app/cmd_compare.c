@@ -166,7 +166,7 @@ typedef struct run_ctx {
 } run_ctx;
 
 /* One run in a fresh Lua state. Times problem.run(method, res), repeating cheap runs until
- * 0.2 s of CPU time or 20 repetitions (cost = the mean). Fills the row. */
+ * 0.1 s of CPU time or 1000 repetitions (cost = the mean). Fills the row. */
 static int one_run(const run_ctx *c, pl_cmp_row *row, char *err, size_t n)
 {
     pl_scene *s = fresh_scene(c->problem_file, c->out);
@@ -231,7 +231,7 @@ static int one_run(const run_ctx *c, pl_cmp_row *row, char *err, size_t n)
             row->value = lua_tonumber(L, -1);
         }
         lua_settop(L, mt);
-    } while (!c->stability && total < 0.2 && reps < 20);
+    } while (!c->stability && total < 0.1 && reps < 1000);
     row->cpu = total / reps;
     row->reps = reps;
     rc = 0;
