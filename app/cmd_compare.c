@@ -456,9 +456,8 @@ int pl_cmd_compare(int argc, char **argv)
                     break;
                 }
                 if (p->stability)
-                    printf("  %-22s %s = %-10.4g ratio %-8.3g measure %-10.3g %s\n", mi[m].name,
-                           mi[m].knob, row->knob_value, row->ratio, row->value,
-                           row->failed ? "FAILED" : "stable");
+                    printf("  %-22s ratio %-8.3g measure %-10.3g %s %s\n", mi[m].name,
+                           row->ratio, row->value, row->failed ? "FAILED" : "stable", row->note);
                 else {
                     row->error = fabs(row->value - p->reference) / fabs(p->reference);
                     printf("  %-22s %s = %-10.4g value %-12.6g error %-10.3g cpu %.3g s\n",

@@ -1,0 +1,32 @@
+# porelab compare (docs/compare.md) and the stability guards (docs/stability.md).
+set(PL_CMP tests/compare)
+
+# The command runs a problem with its methods (two resolutions each) and writes its outputs.
+pl_cli_test(compare_quick RC 0
+  ARGS compare ${PL_CMP}/problems/wave.lua ${PL_CMP}/problems/buoyancy.lua --quick --out ${PL_CLI_OUT}/compare
+  MATCH "darcy_explicit +cells along the rod = 10 "
+  MATCH2 "\\| wave \\| darcy_"
+  EXPECT_FILE ${PL_CLI_OUT}/compare/wave.png)
+pl_cli_test(compare_bad_problem RC 1 ARGS compare ${PL_CMP}/guards/servo_gain.lua --out ${PL_CLI_OUT}/compare_bad
+  MATCH "servo_gain.lua: the problem table needs a name")
+pl_cli_test(compare_usage RC 2 ARGS compare --bogus MATCH "unknown option '--bogus'")
+
+# Stability sweeps: the measured failure boundary against the computed limit. The grain step in
+# translation fails between 0.99 and 1.01 of the computed limit; the undrained staggering
+# between 0.9 and 1.0 (the chart in docs/compare/ shows both sides).
+pl_cli_test(stability_sweeps RC 0
+  ARGS compare ${PL_CMP}/stability/grain_translation.lua ${PL_CMP}/stability/undrained_stagger.lua --out ${PL_CLI_OUT}/stability
+  MATCH "Grain step, translation [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\|"
+  MATCH2 "staggering [^|]*\\| [0-9.e-]+ s \\| 0.9[05]? \\| (0.95|1) \\|")
+
+# Each run-time limit: past it the message names what, where and the safe setting.
+pl_cli_test(guard_grain_step RC 1 ARGS run tests/cli/bad/unstable.lua --quiet --out ${PL_CLI_OUT}/guard_grain
+  MATCH "unstable: .*critical step .*a safe step is [0-9.e-]+ s")
+pl_cli_test(guard_servo_gain RC 1 ARGS run ${PL_CMP}/guards/servo_gain.lua --quiet --out ${PL_CLI_OUT}/guard_servo
+  MATCH "unstable servo: body 3 .*G k dt / F = 20 exceeds its stability limit 2 .*a safe gain is G <= F / \\(k dt\\) = 10 m/s")
+pl_cli_test(guard_servo_gain_safe RC 0 ARGS run ${PL_CMP}/guards/servo_gain_safe.lua --quiet --out ${PL_CLI_OUT}/guard_servo_safe)
+pl_cli_test(guard_stagger RC 1 ARGS run ${PL_CMP}/guards/stagger.lua --quiet --out ${PL_CLI_OUT}/guard_stagger
+  MATCH "undrained grain-water coupling is past its staggering limit .*0.0001 s x 4 .*safe: a grain step dt <= [0-9.e-]+ s with FLUID_SOLVE_TIMESTEPS 1, or FLUID_BULK_MODULUS <= [0-9.e+]+ Pa")
+pl_cli_test(guard_stagger_safe RC 0 ARGS run ${PL_CMP}/guards/stagger_safe.lua --quiet --out ${PL_CLI_OUT}/guard_stagger_safe)
+pl_cli_test(guard_explicit_darcy RC 1 ARGS run ${PL_CMP}/guards/explicit_safety.lua --quiet --out ${PL_CLI_OUT}/guard_explicit
+  MATCH "explicit_safety must be .*\\[0.001, 1\\]")
