@@ -30,3 +30,10 @@ pl_cli_test(guard_stagger RC 1 ARGS run ${PL_CMP}/guards/stagger.lua --quiet --o
 pl_cli_test(guard_stagger_safe RC 0 ARGS run ${PL_CMP}/guards/stagger_safe.lua --quiet --out ${PL_CLI_OUT}/guard_stagger_safe)
 pl_cli_test(guard_explicit_darcy RC 1 ARGS run ${PL_CMP}/guards/explicit_safety.lua --quiet --out ${PL_CLI_OUT}/guard_explicit
   MATCH "explicit_safety must be .*\\[0.001, 1\\]")
+
+# The explicit Darcy update driven past its computed limit (the table refuses
+# FLUID_EXPLICIT_SAFETY > 1, so the test sets the kernel's factor itself).
+pl_add_c_test(test_stability_explicit_darcy SOURCES ${PL_TEST_DIR}/compare/test_stability_explicit_darcy.c
+  LABEL fluid TIMEOUT 60)
+target_include_directories(test_stability_explicit_darcy PRIVATE ${CMAKE_SOURCE_DIR}/app ${CMAKE_SOURCE_DIR}/app/render ${CHOLMOD_INCLUDE})
+target_link_libraries(test_stability_explicit_darcy PRIVATE porelab_render)
