@@ -73,7 +73,7 @@ static int sweep(void) {
         d.xmax = 3.1;
         d.ymin = 0.3;
         d.ymax = 1e7;
-        d.legend = 2;
+        d.legend = 3;
         d.width = 900;
         d.height = 620;
         char path[1024], err[256];

@@ -37,3 +37,29 @@ pl_add_c_test(test_stability_explicit_darcy SOURCES ${PL_TEST_DIR}/compare/test_
   LABEL fluid TIMEOUT 60)
 target_include_directories(test_stability_explicit_darcy PRIVATE ${CMAKE_SOURCE_DIR}/app ${CMAKE_SOURCE_DIR}/app/render ${CHOLMOD_INCLUDE})
 target_link_libraries(test_stability_explicit_darcy PRIVATE porelab_render)
+
+# fluid = "auto": the choice pinned on seven scenes (porelab info prints it with the reasons).
+foreach(case "floating;buoyancy: hydrostatic: no flow expected"
+             "buoyancy_head;buoyancy: darcy, [0-9]+ elements: a head difference of 0.05 m drives flow"
+             "seepage;seepage: darcy, [0-9]+ elements: seepage forces at Re_p = [0-9.]+ < 10"
+             "fast_seepage;seepage: darcy, [0-9]+ elements: Re_p = [0-9.e+]+ is past Darcy's range .*navier_stokes would answer it but is not available in this build"
+             "undrained;pore_pressure: darcy\\+consolidation, [0-9]+ elements: t_c = [0-9.e+]+ s is [0-9.e+]+ times the duration 2 s.*\\(undrained\\)"
+             "drained;pore_pressure: hydrostatic: drained: excess pore pressure dissipates in t_c = [0-9.e-]+ s"
+             "between;flow_between_grains: darcy, [0-9]+ elements: .*stokes at Re_p = [0-9.e-]+, which is not available in this build")
+  list(GET case 0 scene)
+  list(GET case 1 expect)
+  pl_cli_test(auto_${scene} RC 0 ARGS info ${PL_CMP}/auto/${scene}.lua
+    MATCH "fluid auto +needs ${expect}" MATCH2 "rejected: ")
+endforeach()
+pl_cli_test(auto_run_summary RC 0 ARGS run ${PL_CMP}/auto/floating.lua --steps 50 --quiet --out ${PL_CLI_OUT}/auto_run
+  MATCH "fluid auto +needs buoyancy: hydrostatic")
+pl_cli_test(auto_imperative RC 0 ARGS run ${PL_CMP}/auto/imperative.lua --quiet --out ${PL_CLI_OUT}/auto_imp
+  MATCH "imperative auto: water level 0.3 m" MATCH2 "fluid auto +needs buoyancy: hydrostatic")
+pl_cli_test(auto_bad_fluid RC 1 ARGS info ${PL_CMP}/auto/bad_fluid.lua
+  MATCH "bad_fluid.lua:2: world: fluid must be \"auto\" .*\\(got magic\\)")
+pl_cli_test(auto_bad_needs RC 1 ARGS info ${PL_CMP}/auto/bad_needs.lua
+  MATCH "bad_needs.lua:2: world: needs must be \"buoyancy\", \"seepage\", \"pore_pressure\" or \"flow_between_grains\" \\(got 'everything'\\)")
+# A scene that fixes Darcy past its assumptions gets a warning with the number and the model
+# to use instead.
+pl_cli_test(auto_warn_darcy_re RC 0 ARGS info scenes/lab/buoyancy_darcy.lua
+  MATCH "warning +Darcy at a particle Reynolds number Re_p = [0-9.e+]+ .*suggested model: hydrostatic")
