@@ -179,13 +179,16 @@ static int chart_accuracy(const pl_cmp_results *r, int pi, const char *dir)
         ylo = fmin(ylo, ys[i]);
         yhi = fmax(yhi, ys[i]);
     }
-    if (xhi > xlo) {
-        d.xmin = xlo / 1.6;
-        d.xmax = xhi * 1.6;
+    if (xhi > xlo) { /* at least a decade and a half, so that the axis carries labels */
+        const double span = fmax(xhi / xlo * 2.56, 31.6), mid = sqrt(xlo * xhi);
+        d.xmin = mid / sqrt(span);
+        d.xmax = mid * sqrt(span);
     }
-    if (yhi >= ylo) { /* room above the data for the legend */
+    if (yhi >= ylo) { /* room above the data for the legend: it takes a fraction f of the height */
+        const double f = 0.06 * ns + 0.06;
+        const double decades = log10(fmax(yhi / ylo, 10) * 9);
         d.ymin = ylo / 3;
-        d.ymax = yhi * pow(fmax(yhi / ylo, 10), 0.08 * (ns + 1)) * 10;
+        d.ymax = d.ymin * pow(10, decades / (1 - f));
     }
     d.legend = 1;
     d.width = 900;
@@ -266,7 +269,9 @@ static int chart_stability(const pl_cmp_results *r, int pi, const char *dir)
     d.ylabel = ylabel;
     d.series = ser;
     d.series_count = isfinite(fl) ? 3 : 2;
-    d.logx = d.logy = 1;
+    d.logy = 1; /* the ratio to the limit on a linear axis: the failure sits near 1 */
+    d.xmin = 0;
+    for (int i = 0; i < n; i++) d.xmax = fmax(d.xmax, x[i] * 1.05);
     d.ymin = ylo;
     d.ymax = yhi;
     d.legend = 2;
@@ -359,8 +364,10 @@ static int update_doc(const char *doc, const char *table)
     }
     fclose(f);
     text[n] = 0;
-    const char *open = "<!-- compare:summary -->", *close = "<!-- /compare:summary -->";
-    char *a = strstr(text, open), *b = a ? strstr(a, close) : NULL;
+    /* the markers on lines of their own (the prose may quote them) */
+    const char *open = "\n<!-- compare:summary -->\n", *close = "\n<!-- /compare:summary -->";
+    char *a = strstr(text, open), *b = a ? strstr(a + strlen(open) - 1, close) : NULL;
+    if (b) b++; /* keep the newline before the closing marker in the text written before it */
     if (!a || !b) {
         fprintf(stderr, "porelab compare: --update-doc: %s has no '%s' ... '%s' block\n", doc, open, close);
         free(text);
@@ -372,7 +379,7 @@ static int update_doc(const char *doc, const char *table)
         return -1;
     }
     fwrite(text, 1, (size_t)(a - text) + strlen(open), f);
-    fprintf(f, "\n%s", table);
+    fputs(table, f);
     fputs(b, f);
     free(text);
     return fclose(f) == 0 ? 0 : -1;
