@@ -73,6 +73,7 @@ int pl_cmd_info(int argc, char **argv)
         pl_report_damping(stdout, w);
         pl_report_time_step(stdout, w);
         pl_report_models(stdout, w, declarative ? 20 : 0);
+        fputs(pl_scene_fluid_notes(s), stdout); /* fluid = "auto": the choice and why */
         pl_report_flags(stdout, s);
         if (declarative) rc = check_and_print_plan(&o, s, w);
     }

@@ -322,6 +322,7 @@ int pl_cmd_run(int argc, char **argv)
     while (len > 1 && out_dir[len - 1] == '/') out_dir[--len] = '\0';
     pl_scene *s = pl_cli_load_scene(&o, out_dir);
     if (!s) return PL_EXIT_FAIL;
+    fputs(pl_scene_fluid_notes(s), stderr); /* fluid = "auto": the choice; model warnings */
     rc = pl_scene_declarative(s) ? run_declarative(&o, s, out_dir) : run_imperative(&o, s);
     if (pl_report_close_csv(stderr, s) != 0 && rc == PL_EXIT_OK) rc = PL_EXIT_FAIL;
     pl_scene_destroy(&s);

@@ -7,6 +7,7 @@ int pl_cmd_run(int argc, char **argv);
 int pl_cmd_still(int argc, char **argv);
 int pl_cmd_info(int argc, char **argv);
 int pl_cmd_flags(int argc, char **argv);
+int pl_cmd_compare(int argc, char **argv); /* app/cmd_compare.c */
 int pl_cmd_view(int argc, char **argv); /* app/window/cmd_view.c (gl) */
 
 #endif

@@ -16,6 +16,7 @@ static const struct {
     {"still", pl_cmd_still, "draw one figure of a scene at a time T (PNG, SVG or PDF)"},
     {"info", pl_cmd_info, "describe a scene: bodies, materials, contact law, time step, flags"},
     {"flags", pl_cmd_flags, "list the MIMES flags with units, ranges and whether they are built"},
+    {"compare", pl_cmd_compare, "run benchmark problems with every method: error against CPU time"},
 };
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
 

@@ -1,5 +1,6 @@
 /* Scene loader: one Lua state per scene, run under lua_pcall with a traceback handler. */
 #define _GNU_SOURCE /* timer_create with SIGEV_THREAD_ID */
+#include "fluid_auto.h"
 #include "scene.h"
 #include "context.h"
 #include "lua_util.h"
@@ -649,6 +650,19 @@ static void find_return_statement(pl_scene *s)
     s->return_line = found;
 }
 
+static int fluid_choice(lua_State *L)
+{
+    pl_scene *s = lua_touserdata(L, 1);
+    pl_scene_run r = {0};
+    if (pl_scene_run_settings(s, &r) != 0) return 0; /* the run command reports it */
+    lua_rawgeti(L, LUA_REGISTRYINDEX, s->world_ref);
+    const double dt = pl_world_dt(pl_scene_world(s));
+    const double dur = r.t_end > 0 ? r.t_end : (r.steps > 0 && dt > 0 ? (double)r.steps * dt : 0);
+    pl_lua_fluid_auto_apply(L, -1, dur);
+    pl_lua_fluid_check_assumptions(L, -1);
+    return 0;
+}
+
 int pl_scene_load(pl_scene *s)
 {
     lua_State *L = s->L;
@@ -686,8 +700,14 @@ int pl_scene_load(pl_scene *s)
     lua_insert(L, -2);
     lua_pushlightuserdata(L, s);
     lua_insert(L, -2);
-    return protected_call(s, 2, 0);
+    if (protected_call(s, 2, 0) != 0) return -1;
+    /* fluid = "auto": choose the model before anything runs, for the run's length */
+    lua_pushcfunction(L, fluid_choice);
+    lua_pushlightuserdata(L, s);
+    return protected_call(s, 1, 0);
 }
+
+const char *pl_scene_fluid_notes(pl_scene *s) { return pl_lua_fluid_notes(s->L); }
 
 const char *pl_scene_error(const pl_scene *s) { return s->error; }
 const char *pl_scene_traceback(const pl_scene *s) { return s->traceback; }

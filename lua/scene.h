@@ -89,6 +89,10 @@ int pl_scene_params(pl_scene *s, pl_scene_param out[PL_SCENE_MAX_PARAMS]);
 /// Calls params[i + 1].set(world, value) (between steps). Returns 0, or -1 with a message.
 int pl_scene_set_param(pl_scene *s, int i, double value);
 
+/// What porelab chose for world{fluid = "auto"} and why (the rejected models too), and warnings
+/// about a fixed model used past its assumptions: lines ending in '\n', "" when none.
+const char *pl_scene_fluid_notes(pl_scene *s);
+
 /// The scene path as given (for messages).
 const char *pl_scene_path(const pl_scene *s);
 /// "scene.lua:LINE" of the scene's final `return` (the statement that returned the result

@@ -288,6 +288,7 @@ static int f_stats(lua_State *L)
         {"analyses", (double)s.analyses},       {"solves", (double)s.solves},
         {"skipped", (double)s.skipped},         {"substeps", (double)s.substeps},
         {"last_substeps", s.last_substeps},     {"explicit_dt_limit", s.explicit_dt_limit},
+        {"stagger_dt_limit", s.stagger_dt_limit},   {"stagger_stiffness", s.stagger_stiffness},
         {"t_porosity", s.t_porosity},           {"t_assembly", s.t_assembly},
         {"t_factor", s.t_factor},               {"t_solve", s.t_solve},
         {"t_forces", s.t_forces}};

@@ -1,4 +1,5 @@
 /* porelab.world{...}: the world userdata, its stepping, queries and flags. */
+#include "fluid_auto.h"
 #include "wrap.h"
 #include "file_writer.h"
 #include "lua_util.h"
@@ -96,7 +97,7 @@ static int w_flag(lua_State *L)
 static const char *const world_fields[] = {
     "gravity", "dt", "dt_safety", "max_dt", "global_damping", "global_damping_rot",
     "rayleigh_alpha", "local_damping", "skin", "max_overlap_ratio", "energy_surge_ratio",
-    "guard_interval", "flags", NULL};
+    "guard_interval", "flags", "fluid", "needs", "water", NULL};
 
 static pl_world_def read_world_def(lua_State *L, int t)
 {
@@ -167,7 +168,7 @@ static void apply_def_flags(lua_State *L, int t, int world_idx)
 int pl_lua_world_new(lua_State *L)
 {
     pl_world_def def = read_world_def(L, 1);
-    pl_lua_world *lw = lua_newuserdatauv(L, sizeof *lw, 0);
+    pl_lua_world *lw = lua_newuserdatauv(L, sizeof *lw, 1); /* user value 1: fluid = "auto" (fluid_auto.c) */
     memset(lw, 0, sizeof *lw);
     luaL_setmetatable(L, PL_LUA_WORLD_MT);
     lw->flag_count = pl_flag_count();
@@ -180,6 +181,7 @@ int pl_lua_world_new(lua_State *L)
         pl_world_set_file_writer(lw->w, &fw);
     }
     int idx = lua_gettop(L);
+    pl_lua_fluid_auto_read(L, 1, idx);
     apply_def_flags(L, 1, idx);
     lua_settop(L, idx);
     pl_lua_scene_note_world(L, idx);
@@ -224,6 +226,7 @@ static int w_step(lua_State *L)
     pl_lua_world *lw = pl_lua_check_world(L, 1);
     lua_Integer n = luaL_optinteger(L, 2, 1);
     if (n < 0) pl_lua_range_error(L, "step", "n", ">= 0 steps", (double)n);
+    pl_lua_fluid_auto_apply(L, 1, 0); /* fluid = "auto": choose before the first step */
     step_checked(L, lw->w, n, "step");
     return 0;
 }
@@ -232,6 +235,7 @@ static int w_run_until(lua_State *L)
 {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
     double t_end = luaL_checknumber(L, 2);
+    pl_lua_fluid_auto_apply(L, 1, t_end - pl_world_time(lw->w));
     double t = pl_world_time(lw->w);
     if (!(t_end >= t) || !isfinite(t_end)) {
         char range[64];

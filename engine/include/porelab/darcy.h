@@ -44,6 +44,7 @@ typedef struct pl_darcy_def {
     int consolidation; ///< 1: grains moving into or out of the pores change the pore pressure: (S + n rho_f g / K_f) dh/dt - div(K grad h) = -div(v_s) (docs/soil.md) (0/1; flag FLUID_CONSOLIDATION; [0, 1], default 0)
     int porosity_every; ///< grain steps between porosity updates (solid areas, permeability, storage, and the pieces of each grain in each element); in between, every fluid solution takes its source and pushes the grains with the last pieces (docs/soil.md §2); 0 = at every fluid solution (steps; flag FLUID_POROSITY_TIMESTEPS; [0, 2e+09], default 0)
     double bulk_modulus; ///< bulk modulus K_f of the pore fluid (storage n rho_f g / K_f with FLUID_CONSOLIDATION); 0 = incompressible (Pa; flag FLUID_BULK_MODULUS; [0, 1e+30], default 2.2e+09)
+    int stagger_check; ///< 1: refuse a grain step times FLUID_SOLVE_TIMESTEPS above the staggering limit of the undrained coupling, 2 sqrt(m_min / k) with k = K_f d^2 / (n A_e) relaxed by seepage (docs/stability.md); 0: no check (stability sweeps) (0/1; flag FLUID_STAGGER_CHECK; [0, 1], default 1)
 } pl_darcy_def;
 
 /// The defaults of every field (the MIMES defaults of seed 000 Appendix B.2 where it gives one).

@@ -125,6 +125,8 @@ typedef struct pl_fluid_stats {
     long substeps;           ///< explicit sub-steps taken in total
     int last_substeps;       ///< explicit sub-steps in the last update
     double explicit_dt_limit;///< last computed explicit stability limit, s
+    double stagger_dt_limit; ///< last computed staggering limit of the undrained coupling (FLUID_CONSOLIDATION, K_f > 0): grain step x FLUID_SOLVE_TIMESTEPS must stay below it, s (0 = not computed)
+    double stagger_stiffness;///< the water spring K_f / (n (1 - n)^2) behind it, N/m per m (docs/stability.md)
     double t_porosity, t_assembly, t_factor, t_solve, t_forces;
 } pl_fluid_stats;
 pl_status pl_world_fluid_stats(const pl_world *w, pl_fluid_stats *out);

@@ -4,7 +4,11 @@
  *   - non-finite position or velocity of a dynamic body,
  *   - an overlap beyond max_overlap_ratio of the smaller radius,
  *   - (every 50 steps) kinetic energy above energy_surge_ratio times all the energy that could have become
- *     kinetic (initial kinetic + elastic, gravitational energy released, work supplied). */
+ *     kinetic (initial kinetic + elastic, gravitational energy released, work supplied),
+ *   - (every 10 steps) a servo wall whose gain overshoots: the servo (seed 003 eqs. 5.11-5.12)
+ *     moves v = G (F_t - F) / F_t, so the force error changes by a factor 1 - G k dt / F_t per
+ *     step with k the stiffness behind the wall; with k bounded by the sum of the normal
+ *     springs of its contacts the update is stable for G k dt / F_t < 2 (docs/stability.md). */
 #include "dem/world_internal.h"
 #include <math.h>
 #include <stdio.h>
@@ -37,6 +41,31 @@ static void advice(pl_world *w, char *buf, size_t len) {
                  dt, r.dt_critical);
 }
 
+/* The servo limit: G k dt / F_t < 2 with k the sum of the normal springs touching the wall. */
+static pl_status check_servos(pl_world *w) {
+    for (int i = 0; i < w->n; i++) {
+        if (w->motion[i] != PL_MOTION_PRESCRIBED || w->law[i].law != PL_LAW_SERVO) continue;
+        const pl_motion *m = &w->law[i];
+        double k = 0;
+        for (int p = 0; p < w->pair_n; p++) {
+            const pl_pair *q = &w->pairs[p];
+            if (q->touching && (q->a == i || q->b == i)) k += w->pair_params[q->params].kn;
+        }
+        const double ratio = m->servo_gain * k * w->dt / m->servo_target;
+        if (!(ratio > 2)) continue;
+        return pl__error(w, PL_ERR_UNSTABLE,
+                         "unstable servo: body %d (servo along (%.3g, %.3g), force %.4g N) has gain %.4g m/s; "
+                         "with the normal springs of its %s contacts (k = %.4g N/m) and dt = %.3g s the servo "
+                         "update G k dt / F = %.3g exceeds its stability limit 2 at t = %.6g s (step %lld), so "
+                         "the wall overshoots and oscillates; a safe gain is G <= F / (k dt) = %.4g m/s "
+                         "(or a smaller dt)",
+                         i + 1, m->servo_dir.x, m->servo_dir.y, m->servo_target, m->servo_gain,
+                         "touching", k, w->dt, ratio, w->time, (long long)w->step,
+                         m->servo_target / (k * w->dt));
+    }
+    return PL_OK;
+}
+
 pl_status pl__check_guards(pl_world *w) {
     char adv[512];
     if (w->nonfinite_body >= 0) {
@@ -58,6 +87,10 @@ pl_status pl__check_guards(pl_world *w) {
                          "(step %lld, limit %.0f%%) near (%.4g, %.4g); %s",
                          a + 1, shape_name(w->shape[a]), b + 1, shape_name(w->shape[b]), 100 * w->worst_overlap_ratio, w->time,
                          (long long)w->step, 100 * w->def.max_overlap_ratio, w->pos[b].x, w->pos[b].y, adv);
+    }
+    if (w->step % 10 == 0) {
+        const pl_status st = check_servos(w);
+        if (st != PL_OK) return st;
     }
     if (w->step % 50 == 0) {
         const double ke = pl__kinetic_energy(w);

@@ -88,6 +88,7 @@ typedef struct pl_fl_params {
     int force_reuse;        /* 1: fluid forces computed at fluid updates and reused in between */
     int consolidation;      /* 1: (S + n rho g / K_f) dh/dt - div(D grad h) = -div(v_s) */
     double bulk_modulus;    /* K_f, Pa; <= 0: incompressible fluid */
+    int stagger_check;      /* FLUID_STAGGER_CHECK (darcy_stagger.c) */
     int porosity_every;     /* grain steps between porosity updates; 0: every fluid update */
 } pl_fl_params;
 
@@ -196,6 +197,11 @@ pl_status pl_fl_solve_static(struct pl_fluid *f);
 pl_status pl_fl_advance(struct pl_fluid *f, double dt);   /* transient step of length dt */
 void pl_fl_apply_dirichlet(struct pl_fluid *f, double *h);
 double pl_fl_explicit_dt_limit(const struct pl_fluid *f);
+/* the staggering limit of the undrained coupling (darcy_stagger.c) */
+struct pl_world;
+struct pl_grain_view;
+pl_status pl__fluid_stagger_check(struct pl_world *w, struct pl_fluid *f, const struct pl_grain_view *g,
+                                  double dt);
 /* Net inflow (m^2/s per unit thickness) through the nodes a head line prescribes. */
 double pl_fl_line_inflow(const struct pl_fluid *f, int line);
 

@@ -37,6 +37,8 @@ pl_status pl__darcy_advance(void *self, pl_world *w, const pl_grain_view *g, dou
         f->steps_since++;
         if (f->steps_since > 0) f->time_since += dt; /* 0: the step a query's static solve stood for */
         if (f->steps_since >= f->par.solve_every) {
+            st = pl__fluid_stagger_check(w, f, g, dt);
+            if (st != PL_OK) return st;
             st = pl__fluid_update(w, f->time_since, 0);
             if (st != PL_OK) return st;
             f->steps_since = 0;

@@ -58,6 +58,8 @@ static const pl_param TABLE[] = {
       "grain steps between porosity updates (solid areas, permeability, storage, and the pieces of each grain in each element); in between, every fluid solution takes its source and pushes the grains with the last pieces (docs/soil.md §2); 0 = at every fluid solution"),
     R("bulk_modulus", "FLUID_BULK_MODULUS", bulk_modulus, DOUBLE, "Pa", 0, 1e+30, 2200000000.0,
       "bulk modulus K_f of the pore fluid (storage n rho_f g / K_f with FLUID_CONSOLIDATION); 0 = incompressible"),
+    R("stagger_check", "FLUID_STAGGER_CHECK", stagger_check, BOOL, "0/1", 0, 1, 1,
+      "1: refuse a grain step times FLUID_SOLVE_TIMESTEPS above the staggering limit of the undrained coupling, 2 sqrt(m_min / k) with k = K_f d^2 / (n A_e) relaxed by seepage (docs/stability.md); 0: no check (stability sweeps)"),
 };
 #undef R
 #define NROWS ((int)(sizeof TABLE / sizeof TABLE[0]))

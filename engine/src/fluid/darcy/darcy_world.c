@@ -65,6 +65,7 @@ void pl__fluid_read_params(pl_world *w, pl_fl_params *p) {
     p->force_reuse = d.force_reuse;
     p->bulk_modulus = d.bulk_modulus;
     p->porosity_every = d.porosity_every;
+    p->stagger_check = d.stagger_check;
     p->gravity = pl__world_gravity(w);
     double g = hypot(p->gravity.x, p->gravity.y);
     if (g > 0) {

@@ -10,5 +10,6 @@ list(APPEND PL_ENGINE_SOURCES
   src/fluid/darcy/darcy_output.c
   src/fluid/darcy/darcy_model.c
   src/fluid/darcy/darcy_consolidation.c
+  src/fluid/darcy/darcy_stagger.c
   src/fluid/darcy/darcy_soil.c
   src/fluid/darcy/darcy_snapshot.c)

@@ -1,0 +1,79 @@
+# porelab compare (docs/compare.md) and the stability guards (docs/stability.md).
+set(PL_CMP tests/compare)
+
+# The command runs a problem with its methods (two resolutions each) and writes its outputs.
+pl_cli_test(compare_quick RC 0
+  ARGS compare ${PL_CMP}/problems/wave.lua ${PL_CMP}/problems/buoyancy.lua --quick --out ${PL_CLI_OUT}/compare
+  MATCH "darcy_explicit +cells along the rod = 10 "
+  MATCH2 "\\| wave \\| darcy_"
+  EXPECT_FILE ${PL_CLI_OUT}/compare/wave.png)
+pl_cli_test(compare_bad_problem RC 1 ARGS compare ${PL_CMP}/guards/servo_gain.lua --out ${PL_CLI_OUT}/compare_bad
+  MATCH "servo_gain.lua: the problem table needs a name")
+pl_cli_test(compare_usage RC 2 ARGS compare --bogus MATCH "unknown option '--bogus'")
+
+# Stability sweeps: the measured failure boundary against the computed limit. The grain step in
+# translation fails between 0.99 and 1.01 of the computed limit; the undrained staggering
+# between 0.9 and 1.0 (the chart in docs/compare/ shows both sides).
+pl_cli_test(stability_sweeps RC 0
+  ARGS compare ${PL_CMP}/stability/grain_translation.lua ${PL_CMP}/stability/undrained_stagger.lua --out ${PL_CLI_OUT}/stability
+  MATCH "Grain step, translation [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\|"
+  MATCH2 "staggering [^|]*\\| [0-9.e-]+ s \\| 0.9[05]? \\| (0.95|1) \\|")
+
+# Each run-time limit: past it the message names what, where and the safe setting.
+pl_cli_test(guard_grain_step RC 1 ARGS run tests/cli/bad/unstable.lua --quiet --out ${PL_CLI_OUT}/guard_grain
+  MATCH "unstable: .*critical step .*a safe step is [0-9.e-]+ s")
+pl_cli_test(guard_servo_gain RC 1 ARGS run ${PL_CMP}/guards/servo_gain.lua --quiet --out ${PL_CLI_OUT}/guard_servo
+  MATCH "unstable servo: body 3 .*G k dt / F = 20 exceeds its stability limit 2 .*a safe gain is G <= F / \\(k dt\\) = 10 m/s")
+pl_cli_test(guard_servo_gain_safe RC 0 ARGS run ${PL_CMP}/guards/servo_gain_safe.lua --quiet --out ${PL_CLI_OUT}/guard_servo_safe)
+pl_cli_test(guard_stagger RC 1 ARGS run ${PL_CMP}/guards/stagger.lua --quiet --out ${PL_CLI_OUT}/guard_stagger
+  MATCH "undrained grain-water coupling is past its staggering limit .*0.0001 s x 4 .*safe: a grain step dt <= [0-9.e-]+ s with FLUID_SOLVE_TIMESTEPS 1, or FLUID_BULK_MODULUS <= [0-9.e+]+ Pa")
+pl_cli_test(guard_stagger_safe RC 0 ARGS run ${PL_CMP}/guards/stagger_safe.lua --quiet --out ${PL_CLI_OUT}/guard_stagger_safe)
+pl_cli_test(guard_explicit_darcy RC 1 ARGS run ${PL_CMP}/guards/explicit_safety.lua --quiet --out ${PL_CLI_OUT}/guard_explicit
+  MATCH "explicit_safety must be .*\\[0.001, 1\\]")
+
+# The explicit Darcy update driven past its computed limit (the table refuses
+# FLUID_EXPLICIT_SAFETY > 1, so the test sets the kernel's factor itself).
+pl_add_c_test(test_stability_explicit_darcy SOURCES ${PL_TEST_DIR}/compare/test_stability_explicit_darcy.c
+  LABEL fluid TIMEOUT 60)
+target_include_directories(test_stability_explicit_darcy PRIVATE ${CMAKE_SOURCE_DIR}/app ${CMAKE_SOURCE_DIR}/app/render ${CHOLMOD_INCLUDE})
+target_link_libraries(test_stability_explicit_darcy PRIVATE porelab_render)
+
+# fluid = "auto": the choice pinned on seven scenes (porelab info prints it with the reasons).
+foreach(case "floating;buoyancy: hydrostatic: no flow expected"
+             "buoyancy_head;buoyancy: darcy, [0-9]+ elements: a head difference of 0.05 m drives flow"
+             "seepage;seepage: darcy, [0-9]+ elements: seepage forces at Re_p = [0-9.]+ < 10"
+             "fast_seepage;seepage: darcy, [0-9]+ elements: Re_p = [0-9.e+]+ is past Darcy's range .*navier_stokes would answer it but is not available in this build"
+             "undrained;pore_pressure: darcy\\+consolidation, [0-9]+ elements: t_c = [0-9.e+]+ s is [0-9.e+]+ times the duration 2 s.*\\(undrained\\)"
+             "drained;pore_pressure: hydrostatic: drained: excess pore pressure dissipates in t_c = [0-9.e-]+ s"
+             "between;flow_between_grains: darcy, [0-9]+ elements: .*stokes at Re_p = [0-9.e-]+, which is not available in this build")
+  list(GET case 0 scene)
+  list(GET case 1 expect)
+  pl_cli_test(auto_${scene} RC 0 ARGS info ${PL_CMP}/auto/${scene}.lua
+    MATCH "fluid auto +needs ${expect}" MATCH2 "rejected: ")
+endforeach()
+pl_cli_test(auto_run_summary RC 0 ARGS run ${PL_CMP}/auto/floating.lua --steps 50 --quiet --out ${PL_CLI_OUT}/auto_run
+  MATCH "fluid auto +needs buoyancy: hydrostatic")
+pl_cli_test(auto_imperative RC 0 ARGS run ${PL_CMP}/auto/imperative.lua --quiet --out ${PL_CLI_OUT}/auto_imp
+  MATCH "imperative auto: water level 0.3 m" MATCH2 "fluid auto +needs buoyancy: hydrostatic")
+pl_cli_test(auto_bad_fluid RC 1 ARGS info ${PL_CMP}/auto/bad_fluid.lua
+  MATCH "bad_fluid.lua:2: world: fluid must be \"auto\" .*\\(got magic\\)")
+pl_cli_test(auto_bad_needs RC 1 ARGS info ${PL_CMP}/auto/bad_needs.lua
+  MATCH "bad_needs.lua:2: world: needs must be \"buoyancy\", \"seepage\", \"pore_pressure\" or \"flow_between_grains\" \\(got 'everything'\\)")
+# A scene that fixes Darcy past its assumptions gets a warning with the number and the model
+# to use instead.
+pl_cli_test(auto_warn_darcy_re RC 0 ARGS info scenes/lab/buoyancy_darcy.lua
+  MATCH "warning +Darcy at a particle Reynolds number Re_p = [0-9.e+]+ .*suggested model: hydrostatic")
+
+# docs/compare/ and the tables of docs/compare.md, regenerated by one command:
+#   cmake --build build --target compare_docs
+# (every problem with every method, the stability sweeps, the explicit Darcy sweep's chart).
+add_custom_target(compare_docs
+  COMMAND $<TARGET_FILE:porelab> compare tests/compare/problems/buoyancy.lua tests/compare/problems/settling.lua
+          tests/compare/problems/wave.lua tests/compare/problems/terzaghi.lua tests/compare/problems/restitution.lua
+          tests/compare/problems/energy.lua tests/compare/stability/grain_translation.lua
+          tests/compare/stability/grain_rotation.lua tests/compare/stability/undrained_stagger.lua
+          --out docs/compare --update-doc docs/compare.md
+  COMMAND $<TARGET_FILE:test_stability_explicit_darcy> docs/compare
+  WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}
+  DEPENDS porelab test_stability_explicit_darcy
+  USES_TERMINAL)
