@@ -352,8 +352,8 @@ static int w_energy(lua_State *L)
     } f[] = {{"kinetic", e.kinetic},   {"gravitational", e.gravitational},
              {"elastic", e.elastic},   {"damped", e.damped},
              {"friction", e.friction}, {"external", e.external},
-             {"balance", e.balance}};
-    lua_createtable(L, 0, 7);
+             {"balance", e.balance},   {"fracture", e.fracture}};
+    lua_createtable(L, 0, 8);
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
         lua_pushnumber(L, f[i].v);
         lua_setfield(L, -2, f[i].name);

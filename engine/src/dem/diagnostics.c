@@ -40,7 +40,7 @@ double pl__gravitational_energy(const pl_world *w) {
     return e;
 }
 
-double pl__elastic_energy(const pl_world *w) { return w->e_elastic; }
+double pl__elastic_energy(const pl_world *w) { return w->bond_n ? w->e_elastic + w->e_bond : w->e_elastic; }
 
 pl_energy pl_world_energy(const pl_world *w) {
     pl_energy e;
@@ -49,10 +49,11 @@ pl_energy pl_world_energy(const pl_world *w) {
     e.elastic = pl__elastic_energy(w);
     e.damped = w->e_damped;
     e.friction = w->e_friction;
+    e.fracture = w->e_fracture;
     e.external = w->e_external;
-    e.balance = e.kinetic + e.gravitational + e.elastic + e.damped + e.friction - e.external -
+    e.balance = e.kinetic + e.gravitational + e.elastic + e.damped + e.friction + e.fracture - e.external -
                 (w->energy_initialised ? w->e_initial : e.kinetic + e.gravitational + e.elastic + e.damped +
-                                                            e.friction - e.external);
+                                                            e.friction + e.fracture - e.external);
     return e;
 }
 
