@@ -35,7 +35,7 @@ static pl_world *block(int heat) {
         for (int i = 0; i < NX; i++) {
             pl_body_def b = pl_default_body_def();
             b.material = mat;
-            b.radius = RAD * (1 - 0.01 * ((i * 7 + j * 3) % 5)); /* slightly polydisperse: bonds across small gaps */
+            b.radius = RAD * (1 + 0.002 * ((i * 7 + j * 3) % 5)); /* slightly polydisperse: some pairs overlap, bonded in parallel with their contacts */
             b.position = (pl_vec2){i * d + (j % 2) * 0.5 * d, j * h};
             if (j == 0) b.motion = PL_MOTION_FIXED;
             const int k = pl_world_add_body(w, &b);

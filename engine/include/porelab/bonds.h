@@ -5,8 +5,10 @@
 /// until it breaks; it is a persistent object: created between touching or nearly touching
 /// discs (pl_world_bond_touching, pl_world_add_bond), never created or dropped by the
 /// broadphase, kept (intact or broken) for the life of the world, in the state hash, the
-/// snapshots and the restart files. While a bond is intact it replaces the pair's contact law;
-/// once broken the pair is an ordinary frictional contact of its materials.
+/// snapshots and the restart files. A bond acts in parallel with the pair's contact law (the
+/// parallel bond of Potyondy & Cundall 2004): where the outlines overlap the contact pushes as
+/// for any pair; the bond adds its springs while intact. Once broken the pair is an ordinary
+/// frictional contact of its materials, without a jump of force or energy.
 ///
 /// Bond kinematics (discs a, b; n from a to b, t = (-n.y, n.x); l_a, l_b = d r_a/(r_a + r_b),
 /// d r_b/(r_a + r_b) the arms from the centres to the bond point):

@@ -1,7 +1,10 @@
 /* Cohesive bonds between discs (seed 002 §3; porelab/bonds.h, docs/rock.md): the bond store,
  * the three laws as one kernel on plain structs (pl__bond_law), the force pass after the
- * contacts (geometry -> law -> accumulate), the pair flags that hand a bonded pair from the
- * contact law to the bond, the bonds' part of the critical step, and the queries. */
+ * contacts (geometry -> law -> accumulate), the bonds' part of the critical step, and the
+ * queries. A bond acts in parallel with the pair's contact law, as the parallel bond of
+ * Potyondy & Cundall (2004): the contact pushes where the outlines overlap, the bond carries
+ * tension, shear and moment while intact; when it breaks the contact is already there, so the
+ * pair goes on as an ordinary frictional contact with no jump of force or energy. */
 #include "core/alloc.h"
 #include "dem/world_internal.h"
 #include <math.h>
@@ -194,10 +197,9 @@ pl_status pl_world_set_bond_law(pl_world *w, int ma, int mb, const pl_bond_def *
     return PL_OK;
 }
 
-/* A bond changes what the critical step and the pair flags are: both are made again */
+/* A bond changes the critical step and the energy reference */
 static void bonds_changed(pl_world *w) {
     if (!(w->def.dt > 0)) w->dt = 0;
-    w->need_rebuild = 1;
     w->energy_initialised = 0;
 }
 
@@ -303,33 +305,6 @@ int pl_world_bond_touching(pl_world *w, double gap) {
 int pl_world_bond_total(const pl_world *w) { return w->bond_n; }
 int pl_world_bond_count(const pl_world *w) { return w->bond_intact; }
 
-/* ------------------------------------------------------------------ pair flags */
-
-static pl_pair *find_pair(pl_world *w, int a, int b) {
-    int lo = 0, hi = w->pair_n - 1;
-    while (lo <= hi) {
-        const int mid = (lo + hi) / 2;
-        const pl_pair *p = &w->pairs[mid];
-        if (p->a == a && p->b == b) return &w->pairs[mid];
-        if (p->a < a || (p->a == a && p->b < b)) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return NULL;
-}
-
-void pl__bond_mark_pairs(pl_world *w) {
-    for (int k = 0; k < w->bond_n; k++) {
-        const pl_bond *q = &w->bonds[k];
-        if (q->state != PL_BOND_INTACT) continue;
-        pl_pair *p = find_pair(w, q->a, q->b);
-        if (!p) continue;
-        /* the contact law hands the pair to the bond: no contact history while bonded */
-        p->bonded = 1;
-        p->touching = 0;
-        p->fs = p->mr = p->fn = p->ft = p->overlap = p->elastic = 0;
-    }
-}
-
 static void break_bond(pl_world *w, pl_bond *q, int why) {
     q->state = why;
     q->broken_step = w->step + 1; /* the step count once this step is done */
@@ -337,8 +312,6 @@ static void break_bond(pl_world *w, pl_bond *q, int why) {
     q->n = q->s = q->m = 0;
     q->elastic = 0;
     w->bond_intact--;
-    pl_pair *p = find_pair(w, q->a, q->b);
-    if (p) p->bonded = 0; /* from now on an ordinary frictional contact */
 }
 
 /* Bonds of a worn-away grain (heat.c). */

@@ -10,7 +10,6 @@ void pl__compute_contact_forces(pl_world *w, double dt) {
     w->worst_overlap_ratio = 0;
     for (int k = 0; k < w->pair_n; k++) {
         pl_pair *p = &w->pairs[k];
-        if (p->bonded) continue; /* an intact bond acts instead (bond.c) */
         const pl_pair_params *pp = &params[p->params];
         switch (p->kind) {
         case PL_PAIR_DISC_DISC: pl__contact_disc_disc(&c, p, pp, dt); break;

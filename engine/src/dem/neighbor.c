@@ -304,7 +304,6 @@ static pl_status rebuild(pl_world *w) {
         w->pos_at_build[i] = w->pos[i];
         w->angle_at_build[i] = w->angle[i];
     }
-    if (w->bond_intact) pl__bond_mark_pairs(w);
     w->need_rebuild = 0;
     w->rebuilds++;
     return PL_OK;

@@ -43,7 +43,7 @@ typedef struct pl_pair {
     uint8_t kind;         /* PL_PAIR_* */
     uint8_t touching;     /* 1 when in contact after the last force evaluation */
     uint8_t swapped;      /* 1 when the shape roles are swapped relative to a/b (poly-disc) */
-    uint8_t bonded;       /* 1 while an intact bond holds the pair: the bond's law acts, not this one */
+    uint8_t pad;
     int32_t params;       /* index into world->pair_params (material pair) */
     double cn, cs;        /* dashpots of this pair (from restitution and the pair's masses), N s/m */
     double fs;            /* shear (tangential) spring force, N (history) */
@@ -235,7 +235,6 @@ void pl__compute_dt(pl_world *w);
    the critical step (lowers *dt and names the body and kind when it is smaller) */
 void pl__bond_forces(pl_world *w, double dt);
 double pl__bond_energy(const pl_world *w);
-void pl__bond_mark_pairs(pl_world *w);
 void pl__bond_dt_limit(const pl_world *w, double *dt, int *body, const char **kind);
 pl_status pl__heat_wear(pl_world *w, double dt);
 void pl__wear_remove(pl_world *w);
