@@ -12,6 +12,7 @@
  *     w:heat{ fraction = 1, initial = 293.15 }
  *     w:set_temperature(body, T [, hold])   w:temperature(body)   w:body_heat(body)
  *     w:wear{ remove = true }         w:body_wear(body)   w:removed(body) -> bool, time   w:removed_count()
+ *     w:remove(body)                  (carves a disc out: kept index, no contacts or bonds, not drawn)
  * Body numbers are the scene's (1-based) like the handles' indices. Numeric fields are read through the
  * parameter tables pl_bond_params / pl_thermal_params (names, ranges and units from there). */
 #include "wrap.h"
@@ -233,6 +234,12 @@ static int b_removed(lua_State *L) {
     return 2;
 }
 
+static int b_remove(lua_State *L) {
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    pl_lua_check_status(L, lw->w, pl_world_remove_body(lw->w, body_arg(L, 2, "remove")), "remove");
+    return 0;
+}
+
 static int b_removed_count(lua_State *L) {
     lua_pushinteger(L, pl_world_removed_count(pl_lua_check_world(L, 1)->w));
     return 1;
@@ -253,4 +260,5 @@ const luaL_Reg pl_lua_bond_methods[] = {{"bond_law", b_bond_law},
                                         {"body_wear", b_body_wear},
                                         {"removed", b_removed},
                                         {"removed_count", b_removed_count},
+                                        {"remove", b_remove},
                                         {NULL, NULL}};

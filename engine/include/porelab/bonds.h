@@ -158,8 +158,11 @@ pl_status pl_world_enable_wear(pl_world *w, int remove);
 double pl_world_body_wear(const pl_world *w, int body);
 /// 1 when the body was removed by wear (its removal time in *time, s, when not NULL).
 int pl_world_body_removed(const pl_world *w, int body, double *time);
-/// Number of bodies removed by wear so far.
+/// Number of bodies removed (by wear or pl_world_remove_body) so far.
 int pl_world_removed_count(const pl_world *w);
+/// Removes a disc between steps as wear does (to carve a specimen out of a packing): it keeps
+/// its index, leaves every contact and bond and stops moving; recorded like a worn grain.
+pl_status pl_world_remove_body(pl_world *w, int body);
 
 #ifdef __cplusplus
 }

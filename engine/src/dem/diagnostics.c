@@ -93,6 +93,7 @@ int pl_world_copy_contacts(const pl_world *w, pl_contact_info *out, int cap) {
 void pl_world_bounds(const pl_world *w, pl_vec2 *lo, pl_vec2 *hi) {
     pl_vec2 l = {INFINITY, INFINITY}, h = {-INFINITY, -INFINITY};
     for (int i = 0; i < w->n; i++) {
+        if (w->removed[i]) continue; /* worn away or carved out (heat.c) */
         if (w->vert_count[i]) {
             const pl_vec2 *v = &w->verts_world[w->vert_offset[i]];
             for (int k = 0; k < w->vert_count[i]; k++) {

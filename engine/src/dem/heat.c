@@ -194,25 +194,38 @@ pl_status pl__heat_wear(pl_world *w, double dt) {
     return PL_OK;
 }
 
+static void remove_one(pl_world *w, int i) {
+    /* the grain's motion leaves the system with it (external work out of the balance) */
+    if (w->motion[i] != PL_MOTION_FIXED)
+        w->e_external -= 0.5 * w->mass[i] * (w->vel[i].x * w->vel[i].x + w->vel[i].y * w->vel[i].y) +
+                         0.5 * w->inertia[i] * w->omega[i] * w->omega[i];
+    w->removed[i] = 1;
+    w->removed_at[i] = w->time;
+    w->removed_n++;
+    w->motion[i] = PL_MOTION_FIXED;
+    w->vel[i] = (pl_vec2){0, 0};
+    w->omega[i] = 0;
+    w->inv_mass[i] = w->inv_inertia[i] = 0;
+    w->law[i].law = PL_LAW_CONSTANT;
+    w->law[i].velocity = (pl_vec2){0, 0};
+    w->law[i].omega = 0;
+    pl__bond_release_body(w, i);
+    w->need_rebuild = 1;
+    w->classify_dirty = 1;
+}
+
 void pl__wear_remove(pl_world *w) {
-    for (int i = 0; i < w->n; i++) {
-        if (w->removed[i] || w->shape[i] != PL_SHAPE_DISC || !(w->wear[i] >= w->area[i]) || !(w->area[i] > 0)) continue;
-        /* the grain's motion leaves the system with it (external work out of the balance) */
-        if (w->motion[i] != PL_MOTION_FIXED)
-            w->e_external -= 0.5 * w->mass[i] * (w->vel[i].x * w->vel[i].x + w->vel[i].y * w->vel[i].y) +
-                             0.5 * w->inertia[i] * w->omega[i] * w->omega[i];
-        w->removed[i] = 1;
-        w->removed_at[i] = w->time;
-        w->removed_n++;
-        w->motion[i] = PL_MOTION_FIXED;
-        w->vel[i] = (pl_vec2){0, 0};
-        w->omega[i] = 0;
-        w->inv_mass[i] = w->inv_inertia[i] = 0;
-        w->law[i].law = PL_LAW_CONSTANT;
-        w->law[i].velocity = (pl_vec2){0, 0};
-        w->law[i].omega = 0;
-        pl__bond_release_body(w, i);
-        w->need_rebuild = 1;
-        w->classify_dirty = 1;
-    }
+    for (int i = 0; i < w->n; i++)
+        if (!w->removed[i] && w->shape[i] == PL_SHAPE_DISC && w->area[i] > 0 && w->wear[i] >= w->area[i])
+            remove_one(w, i);
+}
+
+pl_status pl_world_remove_body(pl_world *w, int i) {
+    if (i < 0 || i >= w->n) return pl__error(w, PL_ERR_ARG, "remove: body index must be in 0..%d (got %d)", w->n - 1, i);
+    if (w->shape[i] != PL_SHAPE_DISC) return pl__error(w, PL_ERR_ARG, "remove: body %d is not a disc (only discs are removed)", i);
+    if (w->removed[i]) return PL_OK;
+    remove_one(w, i);
+    if (!(w->def.dt > 0)) w->dt = 0;
+    w->energy_initialised = 0;
+    return PL_OK;
 }
