@@ -179,8 +179,9 @@ void pl_report_energy(FILE *f, const pl_world *w)
     fprintf(f, LABEL "dissipated %.6g J by damping, %.6g J by friction; external work "
                      "%.6g J\n",
             "", e.damped, e.friction, e.external);
+    if (e.fracture != 0) fprintf(f, LABEL "released %.6g J by bond fracture and damage\n", "", e.fracture);
     double moved = fabs(e.kinetic) + fabs(e.elastic) + fabs(e.damped) + fabs(e.friction) +
-                   fabs(e.external);
+                   fabs(e.fracture) + fabs(e.external);
     if (moved > 0)
         fprintf(f, LABEL "%.3g J (%.3g%% of the energy exchanged)\n", "balance error",
                 e.balance, 100 * fabs(e.balance) / moved);

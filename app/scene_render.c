@@ -237,7 +237,7 @@ static int read_render(lua_State *L)
     o->force_max_width = pl_lua_field_number(L, 2, fn, "force_max_width", o->force_max_width);
     PL_LUA_CHECK(L, o->force_max_width > 0 && o->force_max_width <= 100, fn, "force_max_width",
                  "in (0, 100] pixels", o->force_max_width);
-    static const char *const coloring[] = {"material", "speed", "stress", NULL};
+    static const char *const coloring[] = {"material", "speed", "stress", "temperature", NULL};
     o->coloring = (pl_body_coloring)pl_lua_field_option(L, 2, fn, "color_by", (int)o->coloring,
                                                         coloring);
     read_field_options(L, o);

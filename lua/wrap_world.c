@@ -16,6 +16,7 @@ extern const luaL_Reg pl_lua_material_constructors[];
 extern const luaL_Reg pl_lua_fluid_methods[]; /* wrap_fluid.c (fluid work) */
 extern const luaL_Reg pl_lua_darcy_methods[]; /* wrap_darcy.c (the Darcy model's parameters) */
 extern const luaL_Reg pl_lua_hydrostatic_methods[]; /* wrap_hydrostatic.c (hydrostatic water) */
+extern const luaL_Reg pl_lua_bond_methods[]; /* wrap_bonds.c (bonds, heat, wear) */
 extern const luaL_Reg pl_lua_state_methods[]; /* wrap_state.c (w:save, w:load) */
 
 pl_lua_world *pl_lua_check_world(lua_State *L, int idx)
@@ -356,8 +357,8 @@ static int w_energy(lua_State *L)
     } f[] = {{"kinetic", e.kinetic},   {"gravitational", e.gravitational},
              {"elastic", e.elastic},   {"damped", e.damped},
              {"friction", e.friction}, {"external", e.external},
-             {"balance", e.balance}};
-    lua_createtable(L, 0, 7);
+             {"balance", e.balance},   {"fracture", e.fracture}};
+    lua_createtable(L, 0, 8);
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
         lua_pushnumber(L, f[i].v);
         lua_setfield(L, -2, f[i].name);
@@ -425,6 +426,7 @@ void pl_lua_register_world(lua_State *L)
     luaL_setfuncs(L, pl_lua_fluid_methods, 0);
     luaL_setfuncs(L, pl_lua_darcy_methods, 0);
     luaL_setfuncs(L, pl_lua_hydrostatic_methods, 0);
+    luaL_setfuncs(L, pl_lua_bond_methods, 0);
     luaL_setfuncs(L, pl_lua_diag_methods, 0);
     luaL_setfuncs(L, pl_lua_state_methods, 0);
     lua_setfield(L, -2, "__index");

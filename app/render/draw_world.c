@@ -21,6 +21,9 @@ void pl_render_scene_free(pl_render_scene *s) {
     free(s->fluid_values);
     free(s->fluid_tris);
     free(s->fluid_velocity);
+    free(s->temperature);
+    free(s->hidden);
+    free(s->bonds);
     pl_render_scene_init(s);
 }
 
@@ -52,6 +55,12 @@ static int reserve_bodies(pl_render_scene *s, int need) {
     double *va = realloc(s->values, (size_t)nc * sizeof *va);
     if (!va) return -1;
     s->values = va;
+    double *te = realloc(s->temperature, (size_t)nc * sizeof *te);
+    if (!te) return -1;
+    s->temperature = te;
+    unsigned char *hd = realloc(s->hidden, (size_t)nc);
+    if (!hd) return -1;
+    s->hidden = hd;
     s->body_cap = nc;
     return 0;
 }
@@ -65,6 +74,8 @@ int pl_render_scene_add_body(pl_render_scene *s, const pl_body_info *b, const pl
     s->bodies[s->body_count] = *b;
     s->stress[s->body_count] = 0.0;
     s->values[s->body_count] = 0.0;
+    s->temperature[s->body_count] = NAN;
+    s->hidden[s->body_count] = 0;
     if (nverts) memcpy(s->verts + s->vert_count, verts, (size_t)nverts * sizeof(pl_vec2));
     s->vert_count += nverts;
     s->body_count++;
@@ -94,6 +105,14 @@ int pl_render_scene_capture(pl_render_scene *s, const pl_world *w) {
         if (nv < 0) nv = 0;
         if (nv > PL_MAX_POLY_VERTICES) nv = PL_MAX_POLY_VERTICES;
         if (pl_render_scene_add_body(s, &b, tmp, nv)) return -1;
+        s->temperature[i] = pl_world_body_temperature(w, i);
+        s->hidden[i] = (unsigned char)pl_world_body_removed(w, i, NULL);
+    }
+    s->bond_count = 0;
+    const int nbond = pl_world_bond_total(w);
+    if (nbond > 0) {
+        if (reserve((void **)&s->bonds, &s->bond_cap, nbond, sizeof(pl_bond_info))) return -1;
+        s->bond_count = pl_world_copy_bonds(w, 0, s->bonds, nbond);
     }
     int nc = pl_world_contact_count(w);
     if (nc > 0) {
@@ -185,7 +204,7 @@ void pl_draw_bodies(pl_draw_list *dl, const pl_render_scene *s, const pl_render_
                 }
                 continue;
             }
-            if (pass != 0) continue;
+            if (pass != 0 || (s->hidden && s->hidden[i])) continue;
             pl_rgba fill, edge, mark;
             if (kinematic) {
                 fill = wall;
@@ -346,5 +365,31 @@ void pl_draw_tangential(pl_draw_list *dl, const pl_render_scene *s, const pl_ren
         pl_vec2 tail = {p.x - 0.5 * len * t.x, p.y + 0.5 * len * t.y};
         pl_vec2 tip = {p.x + 0.5 * len * t.x, p.y - 0.5 * len * t.y};
         pl_dl_arrow(dl, PL_SPACE_PIXEL, tail, tip, col, 2.5f, (float)fmin(9.0, 0.45 * len));
+    }
+}
+
+/* ------------------------------------------------------------------ bonds */
+
+void pl_draw_bonds(pl_draw_list *dl, const pl_render_scene *s) {
+    const pl_rgba intact = pl_rgb_hex(0x6C757D), tension = pl_rgb_hex(0xD00000), shear = pl_rgb_hex(0x1D4ED8);
+    const float thin = (float)fmax(0.5, fmin(1.2, 0.05 * dl->camera.scale * 1e-3));
+    for (int k = 0; k < s->bond_count; k++) {
+        const pl_bond_info *b = &s->bonds[k];
+        if (b->a < 0 || b->b < 0 || b->a >= s->body_count || b->b >= s->body_count) continue;
+        if (b->state == PL_BOND_BROKEN_REMOVED) continue;
+        const pl_body_info *A = &s->bodies[b->a], *B = &s->bodies[b->b];
+        if (b->state == PL_BOND_INTACT) {
+            pl_dl_line(dl, PL_SPACE_WORLD, A->position, B->position, intact, thin);
+            continue;
+        }
+        /* the crack: across the bond through its point, as long as the smaller disc */
+        const double dx = B->position.x - A->position.x, dy = B->position.y - A->position.y, d = hypot(dx, dy);
+        if (!(d > 0)) continue;
+        const double h = 0.9 * fmin(A->radius, B->radius);
+        const pl_vec2 t = {-dy / d * h, dx / d * h};
+        const pl_vec2 p0 = {b->point.x - t.x, b->point.y - t.y}, p1 = {b->point.x + t.x, b->point.y + t.y};
+        const double px = 2 * h * dl->camera.scale;
+        const float wd = (float)fmax(1.5, fmin(4.0, 0.25 * px));
+        pl_dl_line(dl, PL_SPACE_WORLD, p0, p1, b->state == PL_BOND_BROKEN_TENSION ? tension : shear, wd);
     }
 }

@@ -7,6 +7,7 @@
 
 #include "drawlist.h"
 #include "colormap.h"
+#include "porelab/bonds.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -33,7 +34,14 @@ typedef struct pl_render_scene {
     int fluid_field;        ///< which node field fluid_values holds (pl_fluid_node_field)
     double fluid_conductivity; ///< largest element conductivity, m/s (0 = unknown); Darcy
                             ///< velocities below 1e-9 of it (gradients < 1e-9) are not drawn
+    double *temperature;    ///< per body, K (NaN without heat; porelab/bonds.h)
+    unsigned char *hidden;  ///< per body: 1 when worn away (not drawn)
+    pl_bond_info *bonds;    int bond_count, bond_cap; ///< every bond, intact and broken
 } pl_render_scene;
+
+/// Bonds: intact ones as thin lines between the centres, broken ones as crack segments across
+/// the bond (tension red, shear and combined blue).
+void pl_draw_bonds(pl_draw_list *dl, const pl_render_scene *s);
 
 void pl_render_scene_init(pl_render_scene *s);
 void pl_render_scene_free(pl_render_scene *s);

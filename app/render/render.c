@@ -13,7 +13,8 @@
 
 static const char *const layer_names[] = {"bodies",  "forces",   "time",     "mesh",
                                           "pressure", "isolines", "velocity", "colorbar",
-                                          "scalebar", "title",    "overlay",  "tangential"};
+                                          "scalebar", "title",    "overlay",  "tangential",
+                                          "bonds"};
 #define LAYER_COUNT ((int)(sizeof layer_names / sizeof layer_names[0]))
 
 const char *pl_render_layer_name(int bit) {
@@ -133,6 +134,16 @@ static void body_quantity(pl_render_scene *s, const pl_render_options *opt, quan
         lo = 0.0;
         q->map = PL_CMAP_SEQUENTIAL;
         snprintf(q->label, sizeof q->label, "speed (m/s)");
+    } else if (opt->coloring == PL_COLOR_BY_TEMPERATURE) {
+        for (int i = 0; i < s->body_count; i++) {
+            s->values[i] = s->temperature[i];
+            const pl_body_info *b = &s->bodies[i];
+            if (b->shape == PL_SHAPE_SEGMENT || s->hidden[i] || !isfinite(s->values[i])) continue;
+            if (s->values[i] < lo) lo = s->values[i];
+            if (s->values[i] > hi) hi = s->values[i];
+        }
+        q->map = PL_CMAP_SEQUENTIAL;
+        snprintf(q->label, sizeof q->label, "temperature (K)");
     } else {
         pl_render_scene_stress(s);
         for (int i = 0; i < s->body_count; i++) {
@@ -255,6 +266,10 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     if (L & PL_LAYER_FORCES) {
         dl->current_layer = 1;
         fscale = pl_draw_force_chains(dl, s, opt);
+    }
+    if (L & PL_LAYER_BONDS) {
+        dl->current_layer = 12;
+        pl_draw_bonds(dl, s);
     }
     if (L & PL_LAYER_TANGENTIAL) {
         dl->current_layer = 11;

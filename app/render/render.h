@@ -24,7 +24,8 @@ enum {
     PL_LAYER_SCALEBAR = 1u << 8,///< length scale bar
     PL_LAYER_TITLE = 1u << 9,   ///< title text
     PL_LAYER_OVERLAY = 1u << 10,///< scene-drawn overlays
-    PL_LAYER_TANGENTIAL = 1u << 11 ///< tangential contact forces
+    PL_LAYER_TANGENTIAL = 1u << 11,///< tangential contact forces
+    PL_LAYER_BONDS = 1u << 12   ///< bonds (porelab/bonds.h): intact thin, broken ones as cracks
 };
 #define PL_LAYERS_DEFAULT (PL_LAYER_BODIES | PL_LAYER_FORCES | PL_LAYER_TIME)
 
@@ -36,7 +37,8 @@ typedef struct pl_rgba {
 typedef enum pl_body_coloring {
     PL_COLOR_BY_MATERIAL = 0,
     PL_COLOR_BY_SPEED = 1,
-    PL_COLOR_BY_STRESS = 2
+    PL_COLOR_BY_STRESS = 2,
+    PL_COLOR_BY_TEMPERATURE = 3 ///< grain temperature (porelab/bonds.h heat), K
 } pl_body_coloring;
 
 #define PL_RENDER_MAX_MATERIAL_COLORS 16

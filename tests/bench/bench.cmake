@@ -1,3 +1,5 @@
 # Benchmark programs (built with the project, run by tests/bench/run_all.sh, never by ctest).
 add_executable(bench_dem bench/bench_dem.c)
 target_link_libraries(bench_dem PRIVATE porelab_engine)
+add_executable(bench_bonds bench/bench_bonds.c)
+target_link_libraries(bench_bonds PRIVATE porelab_engine)

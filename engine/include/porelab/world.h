@@ -288,8 +288,9 @@ typedef struct pl_energy {
     double elastic;        ///< stored in contact springs, J
     double damped;         ///< dissipated by dashpots and global damping since t = 0, J
     double friction;       ///< dissipated by Coulomb sliding since t = 0, J
+    double fracture;       ///< released by bond softening, damage and breaking since t = 0, J (porelab/bonds.h)
     double external;       ///< work done on the system by prescribed bodies, loads and fluid, J
-    double balance;        ///< kinetic + gravitational + elastic + damped + friction - external - initial
+    double balance;        ///< kinetic + gravitational + elastic + damped + friction + fracture - external - initial
 } pl_energy;
 pl_energy pl_world_energy(const pl_world *w);
 

@@ -37,6 +37,13 @@ int pl__ensure_body_capacity(pl_world *w, int need) {
     GROW(w->tally, cap);
     GROW(w->vert_offset, cap); GROW(w->vert_count, cap);
     GROW(w->pos_at_build, cap); GROW(w->angle_at_build, cap);
+    GROW(w->temperature, cap); GROW(w->heat, cap); GROW(w->wear, cap); GROW(w->removed_at, cap);
+    GROW(w->temp_hold, cap); GROW(w->removed, cap); /* bonds.h columns */
+    {
+        void *p_ = pl_realloc(w->heat_step, (size_t)cap * 2 * sizeof *w->heat_step);
+        if (!p_) return 0;
+        w->heat_step = p_;
+    }
     w->cap = cap;
     return 1;
 }
@@ -180,6 +187,10 @@ int pl_world_add_body(pl_world *w, const pl_body_def *d) {
     w->radius[i] = radius;
     w->load[i] = (pl_vec2){0, 0};
     w->load_moment[i] = 0;
+    w->temperature[i] = w->heat_on ? w->heat_t0 : 0;
+    w->heat[i] = w->wear[i] = 0;
+    w->removed_at[i] = -1;
+    w->temp_hold[i] = w->removed[i] = 0;
     memset(&w->law[i], 0, sizeof w->law[i]);
     w->law[i].law = PL_LAW_CONSTANT;
     w->law[i].velocity = w->vel[i];

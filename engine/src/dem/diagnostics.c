@@ -40,7 +40,7 @@ double pl__gravitational_energy(const pl_world *w) {
     return e;
 }
 
-double pl__elastic_energy(const pl_world *w) { return w->e_elastic; }
+double pl__elastic_energy(const pl_world *w) { return w->bond_n ? w->e_elastic + w->e_bond : w->e_elastic; }
 
 pl_energy pl_world_energy(const pl_world *w) {
     pl_energy e;
@@ -49,10 +49,11 @@ pl_energy pl_world_energy(const pl_world *w) {
     e.elastic = pl__elastic_energy(w);
     e.damped = w->e_damped;
     e.friction = w->e_friction;
+    e.fracture = w->e_fracture;
     e.external = w->e_external;
-    e.balance = e.kinetic + e.gravitational + e.elastic + e.damped + e.friction - e.external -
+    e.balance = e.kinetic + e.gravitational + e.elastic + e.damped + e.friction + e.fracture - e.external -
                 (w->energy_initialised ? w->e_initial : e.kinetic + e.gravitational + e.elastic + e.damped +
-                                                            e.friction - e.external);
+                                                            e.friction + e.fracture - e.external);
     return e;
 }
 
@@ -92,6 +93,7 @@ int pl_world_copy_contacts(const pl_world *w, pl_contact_info *out, int cap) {
 void pl_world_bounds(const pl_world *w, pl_vec2 *lo, pl_vec2 *hi) {
     pl_vec2 l = {INFINITY, INFINITY}, h = {-INFINITY, -INFINITY};
     for (int i = 0; i < w->n; i++) {
+        if (w->removed[i]) continue; /* worn away or carved out (heat.c) */
         if (w->vert_count[i]) {
             const pl_vec2 *v = &w->verts_world[w->vert_offset[i]];
             for (int k = 0; k < w->vert_count[i]; k++) {

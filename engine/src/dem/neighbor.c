@@ -92,6 +92,7 @@ static uint8_t pair_kind(const pl_world *w, int a, int b, uint8_t *swapped) {
     const int sa = w->shape[a], sb = w->shape[b];
     *swapped = 0;
     if (w->motion[a] != PL_MOTION_DYNAMIC && w->motion[b] != PL_MOTION_DYNAMIC) return PL_PAIR_NONE;
+    if (w->removed[a] || w->removed[b]) return PL_PAIR_NONE; /* worn away (heat.c) */
     if (sa == PL_SHAPE_DISC && sb == PL_SHAPE_DISC) return PL_PAIR_DISC_DISC;
     if (sa == PL_SHAPE_SEGMENT && sb == PL_SHAPE_SEGMENT) return PL_PAIR_NONE;
     if (sa == PL_SHAPE_DISC && sb == PL_SHAPE_SEGMENT) return PL_PAIR_DISC_SEGMENT;

@@ -11,5 +11,8 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/guards.c
   src/dem/diagnostics.c
   src/dem/stress.c
+  src/dem/bond.c
+  src/dem/bond_params.c
+  src/dem/heat.c
 
   src/dem/vtk.c)

@@ -97,6 +97,7 @@ void pl__compute_dt(pl_world *w) {
         pl_free(used); pl_free(kn); pl_free(ks); pl_free(cn); pl_free(zeta); pl_free(roll);
         pl_free(min1); pl_free(min2); pl_free(light); pl_free(arg1);
     }
+    pl__bond_dt_limit(w, &r.dt_critical, &r.limiting_body, &r.limit_kind);
     if (w->def.dt > 0) {
         r.dt = w->def.dt;
         r.fixed = 1;

@@ -88,6 +88,8 @@ typedef struct pl_tally {
     double dfx, dfy, dm, sfx, sfy, sm;
 } pl_tally;
 
+#include "dem/rock_internal.h" /* bonds, temperature and wear (bond.c, heat.c) */
+
 struct pl_world {
     pl_world_def def;
     char *error;                  /* PL_ERR_LEN bytes: the last error message. A buffer of its own, so
@@ -171,6 +173,22 @@ struct pl_world {
     uint8_t *wants_load;          /* per body: 1 when the world uses its external load */
     int ext_cap;
 
+    /* bonds, heat and wear (dem/bond.c, dem/heat.c; porelab/bonds.h). The per-body columns
+       are allocated with the others; bond-free, cold worlds never read them in the step */
+    pl_bond *bonds;               /* every bond ever made, intact and broken, in creation order */
+    int bond_n, bond_cap, bond_intact;
+    pl_bond_law *bond_laws;       /* laws by material pair */
+    int bond_law_n, bond_law_cap;
+    pl_thermal *thermal;          /* per material (thermal_n <= material_count) */
+    int thermal_n, thermal_cap;
+    double *temperature, *heat, *wear, *removed_at; /* K, J, m^3/m, s (-1: present) */
+    uint8_t *temp_hold, *removed;
+    double *heat_step;            /* scratch of the heat pass: 2 per body (heat of the step, sum of H) */
+    int heat_on, wear_on, wear_remove, removed_n;
+    double heat_fraction, heat_t0; /* alpha; start temperature, K */
+    double e_bond;                /* energy stored in intact bonds at the last evaluation, J */
+    double e_fracture;            /* released by bond softening, damage and breaking, J */
+
     /* ---- world layer (engine/src/world only) ---- */
     /* flags (MIMES names), values indexed like the flag table (world/flags.c) */
     double *flag_values;
@@ -213,6 +231,15 @@ void pl__apply_motion_laws(pl_world *w, double t, double dt);
 
 /* Time step */
 void pl__compute_dt(pl_world *w);
+
+/* Bonds, heat and wear (bond.c, heat.c): bond forces after the contacts; heat and wear of
+   the step's contacts; removal of worn grains after the step; the bonds' stiffest body for
+   the critical step (lowers *dt and names the body and kind when it is smaller) */
+void pl__bond_forces(pl_world *w, double dt);
+double pl__bond_energy(const pl_world *w);
+void pl__bond_dt_limit(const pl_world *w, double *dt, int *body, const char **kind);
+pl_status pl__heat_wear(pl_world *w, double dt);
+void pl__wear_remove(pl_world *w);
 
 /* Guards: returns PL_OK or PL_ERR_UNSTABLE with message */
 pl_status pl__check_guards(pl_world *w);

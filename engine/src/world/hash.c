@@ -19,5 +19,19 @@ uint64_t pl_world_state_hash(const pl_world *w) {
         if (p->mr != 0) h = pl_hash_bytes(h, &p->mr, sizeof p->mr); /* rolling: no change without it */
         h = pl_hash_bytes(h, &p->area_prev, sizeof p->area_prev);
     }
+    /* bonds, temperatures and wear (porelab/bonds.h): only when used, so that worlds without
+       them keep their hashes */
+    if (w->bond_n) {
+        h = pl_hash_bytes(h, w->bonds, (size_t)w->bond_n * sizeof *w->bonds);
+        h = pl_hash_bytes(h, &w->e_fracture, sizeof w->e_fracture);
+    }
+    if (w->heat_on) {
+        h = pl_hash_bytes(h, w->temperature, (size_t)w->n * sizeof *w->temperature);
+        h = pl_hash_bytes(h, w->heat, (size_t)w->n * sizeof *w->heat);
+    }
+    if (w->wear_on) {
+        h = pl_hash_bytes(h, w->wear, (size_t)w->n * sizeof *w->wear);
+        h = pl_hash_bytes(h, w->removed, (size_t)w->n);
+    }
     return pl__models_hash(w, h); /* every attached model, in attachment order */
 }

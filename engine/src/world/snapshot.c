@@ -14,7 +14,8 @@
 /* Every state array: its field, element size and element count in a given world. */
 typedef struct array_spec {
     size_t offset, elem;
-    int count_kind; /* 0: n bodies, 1: verts_n, 2: pair_n, 3: materials, 4: materials^2, 5: flags */
+    int count_kind; /* 0: n bodies, 1: verts_n, 2: pair_n, 3: materials, 4: materials^2, 5: flags,
+                       6: bond_n, 7: bond_law_n, 8: thermal_n */
     const char *name; /* the field's name (state-image layout hash and messages) */
 } array_spec;
 
@@ -26,6 +27,8 @@ static const array_spec SPECS[] = {
     A(tally, 0), A(x0, 0), A(vert_offset, 0), A(vert_count, 0), A(pos_at_build, 0),
     A(angle_at_build, 0), A(verts_local, 1), A(verts_world, 1), A(pairs, 2), A(materials, 3),
     A(pair_params, 4), A(pair_overrides, 4), A(flag_values, 5),
+    A(temperature, 0), A(heat, 0), A(wear, 0), A(removed_at, 0), A(temp_hold, 0), A(removed, 0),
+    A(bonds, 6), A(bond_laws, 7), A(thermal, 8),
 };
 #undef A
 #define NSPECS ((int)(sizeof SPECS / sizeof SPECS[0]))
@@ -47,6 +50,9 @@ static size_t count_of(const pl_world *w, int kind) {
     case 2: return (size_t)w->pair_n;
     case 3: return (size_t)w->material_count;
     case 4: return (size_t)w->material_count * (size_t)w->material_count;
+    case 6: return (size_t)w->bond_n;
+    case 7: return (size_t)w->bond_law_n;
+    case 8: return (size_t)w->thermal_n;
     default: return (size_t)pl_flag_count();
     }
 }
@@ -151,6 +157,15 @@ pl_status pl_world_restore(pl_world *w, const pl_snapshot *s) {
     return restore_grains(w, s);
 }
 
+static int grow_to(void **p, int *cap, int need, size_t elem) {
+    if (need <= *cap) return 1;
+    void *q = pl_realloc(*p, (size_t)need * elem);
+    if (!q) return 0;
+    *p = q;
+    *cap = need;
+    return 1;
+}
+
 /* The grain store's part of a restore (also the last step of loading a state image). */
 static pl_status restore_grains(pl_world *w, const pl_snapshot *s) {
     const pl_world *o = &s->w;
@@ -168,6 +183,11 @@ static pl_status restore_grains(pl_world *w, const pl_snapshot *s) {
         w->pairs = p;
         w->pair_cap = o->pair_n;
     }
+    /* bonds and their laws and the thermal table may have grown or shrunk since */
+    if (!grow_to((void **)&w->bonds, &w->bond_cap, o->bond_n, sizeof *w->bonds) ||
+        !grow_to((void **)&w->bond_laws, &w->bond_law_cap, o->bond_law_n, sizeof *w->bond_laws) ||
+        !grow_to((void **)&w->thermal, &w->thermal_cap, o->thermal_n, sizeof *w->thermal))
+        return pl__error(w, PL_ERR_NOMEM, "restore: out of memory");
     pl_world live = *w;
     *w = *o;
     /* keep the live buffers, capacities, scratch and attachments */
@@ -176,6 +196,10 @@ static pl_status restore_grains(pl_world *w, const pl_snapshot *s) {
     w->material_cap = live.material_cap;
     w->verts_cap = live.verts_cap;
     w->pair_cap = live.pair_cap;
+    w->bond_cap = live.bond_cap;
+    w->heat_step = live.heat_step;
+    w->bond_law_cap = live.bond_law_cap;
+    w->thermal_cap = live.thermal_cap;
     w->pairs_scratch = live.pairs_scratch;
     w->pair_scratch_cap = live.pair_scratch_cap;
     w->is_large = live.is_large;
@@ -266,6 +290,8 @@ pl_status pl__grains_save(const pl_world *w, pl_image *img) {
     c.wants_load = NULL;
     c.models = NULL;
     c.cap = c.material_cap = c.verts_cap = c.pair_cap = c.pair_scratch_cap = c.class_cap = 0;
+    c.bond_cap = c.bond_law_cap = c.thermal_cap = 0;
+    c.heat_step = NULL;
     c.cand_cap = c.cell_cap = c.cell_items_cap = c.body_cell_cap = c.cursor_cap = 0;
     c.model_n = c.model_cap = c.ext_cap = 0;
     c.error = NULL;
@@ -335,6 +361,10 @@ pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
                          "this one has %d, %d and %d (load a state into the world its scene builds)",
                          on, ov, om, w->n, w->verts_n, w->material_count);
     }
+    if (o->bond_n < 0 || o->bond_law_n < 0 || o->thermal_n < 0 || o->thermal_n > o->material_count) {
+        pl_free(s);
+        return pl__error(w, PL_ERR_IO, "load state: damaged grains section (bond or thermal counts)");
+    }
     if (o->pair_n < 0 || o->large_n < 0 || o->large_n > o->n) {
         const int pn = o->pair_n, ln = o->large_n;
         pl_free(s);
@@ -363,6 +393,13 @@ pl_status pl__grains_decode(pl_world *w, pl_image *img, pl_snapshot **out) {
             if (!s->large_list) st = PL_ERR_NOMEM;
         }
         if (st != PL_OK) pl__error(w, st, "load state: the broadphase split of the grains section does not fit");
+    }
+    for (int k = 0; k < NSPECS && st == PL_OK; k++) {
+        if (SPECS[k].offset != offsetof(pl_world, bonds)) continue;
+        const pl_bond *b = s->data[k];
+        for (int j = 0; j < o->bond_n && st == PL_OK; j++)
+            if (b[j].a < 0 || b[j].b <= b[j].a || b[j].b >= o->n || b[j].law < 0 || b[j].law >= o->bond_law_n)
+                st = pl__error(w, PL_ERR_IO, "load state: damaged bond %d in the grains section", j);
     }
     if (st == PL_OK && img->pos != img->len) {
         st = PL_ERR_IO;

@@ -74,6 +74,8 @@ void pl_world_destroy(pl_world **wp) {
     pl_free(w->verts_local); pl_free(w->verts_world);
     pl_free(w->pairs); pl_free(w->pairs_scratch);
     pl_free(w->pos_at_build); pl_free(w->angle_at_build);
+    pl_free(w->temperature); pl_free(w->heat); pl_free(w->wear); pl_free(w->removed_at);
+    pl_free(w->temp_hold); pl_free(w->removed); pl_free(w->heat_step); pl_free(w->bonds); pl_free(w->bond_laws); pl_free(w->thermal);
     pl_free(w->cell_start); pl_free(w->cell_items); pl_free(w->body_cell); pl_free(w->cursor);
     pl_free(w->is_large); pl_free(w->large_list); pl_free(w->cand);
     pl_free(w->flag_values);
@@ -103,11 +105,12 @@ static void init_energy_reference(pl_world *w) {
     if (pl__neighbor_update(w) == PL_OK) {
         pl__compute_contact_forces(w, 0);
         memset(w->tally, 0, (size_t)w->n * sizeof *w->tally);
+        w->e_bond = pl__bond_energy(w);
     }
     w->e_supply0 = pl__kinetic_energy(w) + pl__elastic_energy(w);
     w->pe0 = pl__gravitational_energy(w);
     w->ext0 = w->e_external;
-    w->e_initial = w->e_supply0 + w->pe0 + w->e_damped + w->e_friction - w->e_external;
+    w->e_initial = w->e_supply0 + w->pe0 + w->e_damped + w->e_friction + w->e_fracture - w->e_external;
     w->energy_initialised = 1;
 }
 
@@ -141,12 +144,18 @@ pl_status pl_world_step(pl_world *w, int nsteps) {
             w->torque[i] = w->load_moment[i];
         }
         pl__compute_contact_forces(w, dt);
+        if (w->bond_intact) pl__bond_forces(w, dt);
+        if (w->heat_on) {
+            st = pl__heat_wear(w, dt);
+            if (st != PL_OK) return st;
+        }
         st = pl__models_step(w, dt);
         if (st != PL_OK) return st;
         pl__apply_motion_laws(w, w->time, dt);
         pl__integrate(w, dt);
         w->time += dt;
         w->step++;
+        if (w->wear_remove) pl__wear_remove(w);
         if ((w->step % w->def.guard_interval) == 0 || s == nsteps - 1) {
             st = pl__check_guards(w);
             if (st != PL_OK) return st;
