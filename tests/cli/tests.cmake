@@ -347,3 +347,4 @@ add_test(NAME cli_still_from_state
           -DSTEPS=600 -DEVERY=0.03 -DAT=0.1 -P ${PL_CLI_DIR}/still_from_state.cmake
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(cli_still_from_state PROPERTIES LABELS cli TIMEOUT 120)
+include(${CMAKE_CURRENT_LIST_DIR}/sweep/tests.cmake)
