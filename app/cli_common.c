@@ -87,9 +87,56 @@ int pl_cli_scene_limits(const pl_opts *o, pl_scene *s)
     return 0;
 }
 
+int pl_cli_parse_inputs(const pl_opts *o, pl_cli_inputs *in)
+{
+    memset(in, 0, sizeof *in);
+    const char *cmd = o->cmd->command;
+    const char *v = pl_opts_get(o, "--seed");
+    if (v) {
+        char *end;
+        long long x = strtoll(v, &end, 10);
+        if (end == v || *end || x < 0 || x > 9007199254740991LL) {
+            fprintf(stderr, "porelab %s: --seed must be an integer in [0, 9007199254740991] (0: the scene's own "
+                            "seeds; got '%s')\n", cmd, v);
+            return -1;
+        }
+        in->seed = x;
+    }
+    const char *all[PL_CLI_MAX_PARAMS];
+    int n = pl_opts_all(o, "--param", all, PL_CLI_MAX_PARAMS);
+    if (n > PL_CLI_MAX_PARAMS) {
+        fprintf(stderr, "porelab %s: at most %d --param options (got %d)\n", cmd, PL_CLI_MAX_PARAMS, n);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        const char *eq = strchr(all[i], '=');
+        size_t len = eq ? (size_t)(eq - all[i]) : 0;
+        char *end = NULL;
+        double x = eq ? strtod(eq + 1, &end) : 0;
+        if (!eq || len == 0 || len >= sizeof in->name_buf[i] || end == eq + 1 || *end || !isfinite(x)) {
+            fprintf(stderr, "porelab %s: --param must be NAME=NUMBER with a parameter the scene declares (got '%s')\n",
+                    cmd, all[i]);
+            return -1;
+        }
+        memcpy(in->name_buf[i], all[i], len);
+        in->name_buf[i][len] = '\0';
+        for (int j = 0; j < i; j++)
+            if (strcmp(in->name_buf[j], in->name_buf[i]) == 0) {
+                fprintf(stderr, "porelab %s: --param %s given twice\n", cmd, in->name_buf[i]);
+                return -1;
+            }
+        in->names[i] = in->name_buf[i];
+        in->values[i] = x;
+        in->n = i + 1;
+    }
+    return 0;
+}
+
 pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir)
 {
-    pl_scene_options so = {o->positional[0], out_dir, pl_opts_has(o, "--trust")};
+    pl_cli_inputs in;
+    if (pl_cli_parse_inputs(o, &in) != 0) return NULL;
+    pl_scene_options so = {o->positional[0], out_dir, pl_opts_has(o, "--trust"), in.seed, in.n, in.names, in.values};
     pl_scene *s = pl_scene_create(&so);
     if (!s) {
         fprintf(stderr, "porelab: out of memory while creating the Lua state\n");
@@ -100,7 +147,7 @@ pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir)
         return NULL;
     }
     pl_scene_register_chart(s);
-    if (pl_scene_load(s) != 0) {
+    if (pl_scene_load(s) != 0 || pl_scene_apply_params(s) != 0) {
         pl_cli_print_scene_error(o, s);
         pl_scene_destroy(&s);
         return NULL;

@@ -19,7 +19,21 @@ void pl_cli_default_out(const char *scene_path, char *out, size_t n);
  * the scene's defaults). Prints the error and returns -1 when one is out of range. */
 int pl_cli_scene_limits(const pl_opts *o, pl_scene *s);
 
-/* Creates and runs the scene; on failure prints "porelab: <message>" (plus the Lua
+/* The run inputs of the command line: --param name=value (repeatable) and --seed N, for the
+ * commands that offer them. */
+#define PL_CLI_MAX_PARAMS 32
+typedef struct pl_cli_inputs {
+    long long seed; /* 0: the scene's own seeds */
+    int n;
+    const char *names[PL_CLI_MAX_PARAMS];
+    char name_buf[PL_CLI_MAX_PARAMS][48];
+    double values[PL_CLI_MAX_PARAMS];
+} pl_cli_inputs;
+/* Parses them; prints "porelab run: --param ...: ..." and returns -1 when malformed. */
+int pl_cli_parse_inputs(const pl_opts *o, pl_cli_inputs *in);
+
+/* Creates and runs the scene (with the --param/--seed inputs, checked against the scene's
+ * declared parameters); on failure prints "porelab: <message>" (plus the Lua
  * traceback when --traceback was given) and returns NULL. */
 pl_scene *pl_cli_load_scene(const pl_opts *o, const char *out_dir);
 

@@ -153,7 +153,7 @@ static int in_list(const char *name, const char *csv)
 
 static pl_scene *fresh_scene(const char *problem, const char *out)
 {
-    pl_scene_options so = {problem, out, 0};
+    pl_scene_options so = {problem, out, 0, 0, 0, NULL, NULL};
     pl_scene *s = pl_scene_create(&so);
     return s;
 }

@@ -7,13 +7,18 @@
 #include "report.h"
 #include "run_plan.h"
 #include "vtk_series.h"
+#include "manifest.h"
 #include "render/drawlist.h"
 #include "gl_cli.h"
 #include "window.h"
 
 #include <limits.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+#include <unistd.h>
 
 static const pl_opt_spec run_specs[] = {
     {"--out", NULL, "DIR", "output folder (default out/<scene-name>/)"},
@@ -31,6 +36,10 @@ static const pl_opt_spec run_specs[] = {
     {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
     {"--renderer", NULL, "NAME", "cairo (default) or gl (OpenGL through OSMesa) for the frames"},
     {"--window", NULL, NULL, "open the live lab window instead of writing frames (porelab view)"},
+    {"--param", NULL, "NAME=VALUE", "set a parameter the scene declares (repeatable), checked against its range"},
+    {"--seed", NULL, "N", "run seed feeding every random helper (default 0: the scene's own seeds)"},
+    {"--no-frames", NULL, NULL, "write no frame images (hooks, CSV and the manifest as usual): for sweeps"},
+    {"--skip-done", NULL, NULL, "do nothing when DIR/manifest.json holds a finished run with the same inputs"},
     PL_RESTART_OPTION_ROWS,
     {NULL, NULL, NULL, NULL}};
 
@@ -41,7 +50,9 @@ static const pl_command_help run_help = {
     "frame. An imperative script steps itself; porelab exits non-zero if it raises an error.\n"
     "The run length comes from --until/--steps, else the scene's run table, else the flag\n"
     "TIMESTEPS, else 1 s; the frame interval from --fps/--every, else the scene, else the\n"
-    "flag PRINT_INT, else 30 frames per second.",
+    "flag PRINT_INT, else 30 frames per second. Every run writes DIR/manifest.json: scene and\n"
+    "its hash, parameters, seed, build, final state hash, wall and CPU time, exit status and\n"
+    "the scene's results (docs/scene-reference.md).",
     run_specs};
 
 typedef struct run_ctx {
@@ -59,6 +70,8 @@ typedef struct run_ctx {
     pl_gl_frames *gfw; /* --renderer gl: frames drawn by OpenGL instead of fw (last member) */
     pl_restart *rs;    /* restart files (restart.c), NULL without --save-every/--save-at/--resume */
     int first_frame;   /* index of the first frame this process writes (a resumed run: > 0) */
+    int no_frames;     /* --no-frames: frame times reached (hooks called), no images written */
+    int skipped;       /* frame times passed without an image (--no-frames) */
 } run_ctx;
 
 static long long steps_done(const run_ctx *c)
@@ -70,6 +83,9 @@ static int frame_count(const run_ctx *c)
 {
     return c->gfw ? pl_gl_frames_count(c->gfw) : c->fw ? pl_frame_writer_count(c->fw) : 0;
 }
+
+/* the index the next frame gets (also with --no-frames) */
+static long long frame_index(const run_ctx *c) { return (long long)frame_count(c) + c->skipped; }
 
 static void print_stop_at(const run_ctx *c, const char *where, const char *why)
 {
@@ -98,7 +114,12 @@ static void print_world_stop(const run_ctx *c)
 static int frame(run_ctx *c)
 {
     char err[1024];
-    long long index = frame_count(c);
+    long long index = frame_index(c);
+    if (c->no_frames) {
+        c->skipped++;
+        c->last_frame_time = pl_world_time(c->w);
+        goto hooks;
+    }
     if (pl_cli_overlay(c->o, c->s, c->overlay, c->ropt) != 0) {
         print_stop(c, "the scene's render.overlay raised an error (above)");
         return -1;
@@ -117,6 +138,7 @@ static int frame(run_ctx *c)
         print_stop(c, err);
         return -1;
     }
+hooks:
     if (pl_scene_call_hook(c->s, "on_frame", index) != 0) {
         pl_cli_print_scene_error(c->o, c->s);
         print_stop(c, "the scene's on_frame hook raised an error (above)");
@@ -205,12 +227,17 @@ static void print_summary(const run_ctx *c, double wall)
         snprintf(interval, sizeof interval, "every %lld steps", p->every);
     else
         snprintf(interval, sizeof interval, "%g per simulated second", p->fps);
+    if (c->no_frames) {
+        printf("  %-15snone written (--no-frames; %d frame times, %s, from %s)\n", "frames", c->skipped, interval,
+               p->frames_from);
+        return;
+    }
     printf("  %-15s%d in %s/ (frame_%06d.png .. frame_%06d.png; %s, from %s)\n", "frames",
            frames - c->first_frame, c->out_dir, c->first_frame, frames > 0 ? frames - 1 : 0, interval,
            p->frames_from);
 }
 
-static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
+static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir, pl_manifest *man)
 {
     pl_world *w = pl_scene_world(s);
     pl_render_options ropt;
@@ -222,7 +249,7 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     pl_draw_list overlay;
     pl_draw_list_init(&overlay);
     run_ctx c = {o, s, w, &plan, &ropt, &overlay, out_dir, NULL, NULL,
-                 (long long)pl_world_step_count(w), 0, NULL, NULL, 0};
+                 (long long)pl_world_step_count(w), 0, NULL, NULL, 0, pl_opts_has(o, "--no-frames"), 0};
     if ((rc = pl_restart_open(&c.rs, o, &plan, w, out_dir, c.start_step)) != 0) {
         pl_draw_list_free(&overlay);
         return rc;
@@ -271,12 +298,16 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir)
     if (c.vtk && rc == PL_EXIT_OK && !quiet) printf("  %-15s%s/*.pvd (open in ParaView)\n", "vtk", out_dir);
     pl_vtk_series_close(&c.vtk);
     if (pl_opts_has(o, "--hash")) pl_cli_print_hash(w);
+    man->has_state = 1;
+    man->state_hash = pl_world_state_hash(w);
+    man->step_count = (long long)pl_world_step_count(w);
+    man->t_end = pl_world_time(w);
     pl_restart_close(&c.rs);
     pl_draw_list_free(&overlay);
     return rc;
 }
 
-static int run_imperative(const pl_opts *o, pl_scene *s)
+static int run_imperative(const pl_opts *o, pl_scene *s, pl_manifest *man)
 {
     static const char *const ignored[] = {"--until", "--steps", "--fps", "--every", "--video",
                                           "--size", "--layers", "--vtk", NULL};
@@ -301,11 +332,89 @@ static int run_imperative(const pl_opts *o, pl_scene *s)
         }
     }
     if (pl_opts_has(o, "--hash") && w) pl_cli_print_hash(w);
+    if (w) {
+        man->has_state = 1;
+        man->state_hash = pl_world_state_hash(w);
+        man->step_count = (long long)pl_world_step_count(w);
+        man->t_end = pl_world_time(w);
+    }
     return PL_EXIT_OK;
+}
+
+static double cpu_seconds(void)
+{
+    struct rusage ru;
+    if (getrusage(RUSAGE_SELF, &ru) != 0) return 0;
+    return (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec + (double)ru.ru_stime.tv_sec +
+           1e-6 * (double)ru.ru_stime.tv_usec;
+}
+
+/* The manifest's inputs (before the run). Returns 0, or an exit code after printing. */
+static int manifest_start(const pl_opts *o, const char *out_dir, pl_manifest *m)
+{
+    pl_cli_inputs in;
+    if (pl_cli_parse_inputs(o, &in) != 0) return PL_EXIT_USAGE;
+    m->seed = in.seed;
+    m->nover = in.n;
+    for (int i = 0; i < in.n; i++) {
+        snprintf(m->over_name[i], sizeof m->over_name[i], "%s", in.names[i]);
+        m->over_value[i] = in.values[i];
+    }
+    m->until = pl_opts_get(o, "--until");
+    m->steps = pl_opts_get(o, "--steps");
+    char abs[PATH_MAX];
+    if (out_dir[0] == '/' || !getcwd(abs, sizeof abs)) snprintf(m->out_dir, sizeof m->out_dir, "%s", out_dir);
+    else pl_path_join(m->out_dir, sizeof m->out_dir, abs, out_dir);
+    time_t now = time(NULL);
+    struct tm tm;
+    gmtime_r(&now, &tm);
+    strftime(m->started_utc, sizeof m->started_utc, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    char err[512];
+    pl_manifest_prepare(m, o->positional[0], err, sizeof err); /* unreadable: the loader says so */
+    return 0;
+}
+
+static void manifest_finish(pl_manifest *m, pl_scene *s, const char *out_dir, int rc, double wall0, int quiet)
+{
+    char err[1024];
+    m->exit_status = rc;
+    m->wall_s = pl_wall_seconds() - wall0;
+    m->cpu_s = cpu_seconds();
+    if (s) {
+        m->nparams = pl_scene_declared_params(s, m->params, m->overridden, 2 * PL_SCENE_MAX_PARAMS);
+        if (rc == PL_EXIT_OK) {
+            int n = pl_scene_results(s, m->results);
+            if (n < 0) {
+                fprintf(stderr, "porelab: %s\n", pl_scene_error(s));
+                m->exit_status = PL_EXIT_FAIL;
+                snprintf(m->error, sizeof m->error, "%s", pl_scene_error(s));
+            } else {
+                m->nresults = n;
+            }
+        } else if (pl_scene_error(s)[0]) {
+            snprintf(m->error, sizeof m->error, "%s", pl_scene_error(s));
+        }
+    }
+    if (m->exit_status != 0 && !m->error[0]) snprintf(m->error, sizeof m->error, "the run failed (its messages above)");
+    if (pl_path_mkdirs(out_dir) != 0 || pl_manifest_write(m, out_dir, err, sizeof err) != 0) {
+        fprintf(stderr, "porelab: manifest: %s\n", err[0] ? err : out_dir);
+        if (m->exit_status == 0) m->exit_status = PL_EXIT_FAIL;
+        return;
+    }
+    if (!quiet && m->exit_status == 0) {
+        for (int i = 0; i < m->nresults; i++) {
+            const pl_scene_result *r = &m->results[i];
+            if (r->kind == 2 || r->kind == 1)
+                printf("  %-15s%s = %s\n", i ? "" : "results", r->name, r->kind == 2 ? r->text : r->value != 0 ? "true" : "false");
+            else printf("  %-15s%s = %.6g%s%s\n", i ? "" : "results", r->name, r->value, r->unit[0] ? " " : "", r->unit);
+        }
+        printf("  %-15s%s/manifest.json\n", "manifest", out_dir);
+    }
 }
 
 int pl_cmd_run(int argc, char **argv)
 {
+    double wall0 = pl_wall_seconds();
     pl_opts o;
     int rc = pl_opts_parse(&o, &run_help, argc, argv, 1);
     if (rc >= 0) return rc;
@@ -313,6 +422,10 @@ int pl_cmd_run(int argc, char **argv)
     pl_report_ignore_file_size_signal();
     if (pl_gl_cli_parse_renderer(pl_opts_get(&o, "--renderer"), "run") < 0) return PL_EXIT_USAGE;
     if (pl_opts_has(&o, "--window")) return pl_window_main(&o);
+    if (pl_opts_has(&o, "--no-frames") && (pl_opts_has(&o, "--video") || pl_opts_has(&o, "--vtk"))) {
+        fprintf(stderr, "porelab run: --no-frames writes no frames: it cannot be combined with --video or --vtk\n");
+        return PL_EXIT_USAGE;
+    }
     char out_dir[PATH_MAX];
     if (pl_opts_has(&o, "--out"))
         snprintf(out_dir, sizeof out_dir, "%s", pl_opts_get(&o, "--out"));
@@ -320,11 +433,26 @@ int pl_cmd_run(int argc, char **argv)
         pl_cli_default_out(o.positional[0], out_dir, sizeof out_dir);
     size_t len = strlen(out_dir);
     while (len > 1 && out_dir[len - 1] == '/') out_dir[--len] = '\0';
+    static pl_manifest man; /* large (results, parameters): not on the stack */
+    memset(&man, 0, sizeof man);
+    if ((rc = manifest_start(&o, out_dir, &man)) != 0) return rc;
+    if (pl_opts_has(&o, "--skip-done") && pl_manifest_done(out_dir, man.inputs)) {
+        if (!pl_opts_has(&o, "--quiet"))
+            printf("porelab: %s/manifest.json already holds this run (same scene, parameters, seed, length and "
+                   "build): skipped\n", out_dir);
+        return PL_EXIT_OK;
+    }
     pl_scene *s = pl_cli_load_scene(&o, out_dir);
-    if (!s) return PL_EXIT_FAIL;
+    if (!s) {
+        snprintf(man.error, sizeof man.error, "the scene could not be loaded (its message above)");
+        manifest_finish(&man, NULL, out_dir, PL_EXIT_FAIL, wall0, 1);
+        return PL_EXIT_FAIL;
+    }
     fputs(pl_scene_fluid_notes(s), stderr); /* fluid = "auto": the choice; model warnings */
-    rc = pl_scene_declarative(s) ? run_declarative(&o, s, out_dir) : run_imperative(&o, s);
+    rc = pl_scene_declarative(s) ? run_declarative(&o, s, out_dir, &man) : run_imperative(&o, s, &man);
     if (pl_report_close_csv(stderr, s) != 0 && rc == PL_EXIT_OK) rc = PL_EXIT_FAIL;
+    manifest_finish(&man, s, out_dir, rc, wall0, pl_opts_has(&o, "--quiet"));
+    rc = man.exit_status;
     pl_scene_destroy(&s);
     return rc;
 }

@@ -17,6 +17,8 @@ static const struct {
     {"info", pl_cmd_info, "describe a scene: bodies, materials, contact law, time step, flags"},
     {"flags", pl_cmd_flags, "list the MIMES flags with units, ranges and whether they are built"},
     {"compare", pl_cmd_compare, "run benchmark problems with every method: error against CPU time"},
+    {"sweep", pl_cmd_sweep, "expand parameters and seeds into jobs (GNU parallel, Slurm array, Snakemake)"},
+    {"collect", pl_cmd_collect, "gather the manifests of runs into one CSV and chart a result"},
 };
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
 
@@ -25,7 +27,7 @@ static void usage(FILE *f)
     fprintf(f, "usage: porelab COMMAND [options]   (porelab COMMAND --help for details)\n\n"
                "commands:\n");
     for (int i = 0; i < NCOMMANDS; i++)
-        fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
+        fprintf(f, "  %-14s %s\n", commands[i].name, commands[i].summary);
     fprintf(f, "\nother options:\n  --version  print the version\n  --help     show this help\n"
                "\nexample: porelab run scenes/demo.lua   (frames go to out/demo/)\n");
 }

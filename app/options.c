@@ -74,6 +74,8 @@ int pl_opts_parse(pl_opts *o, const pl_command_help *cmd, int argc, char **argv,
 {
     memset(o, 0, sizeof *o);
     o->cmd = cmd;
+    o->argc = argc;
+    o->argv = argv;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -116,6 +118,19 @@ const char *pl_opts_get(const pl_opts *o, const char *name)
 }
 
 int pl_opts_has(const pl_opts *o, const char *name) { return pl_opts_get(o, name) != NULL; }
+
+int pl_opts_all(const pl_opts *o, const char *name, const char **out, int cap)
+{
+    int k = find_spec(o->cmd, name), n = 0;
+    if (k < 0 || !spec_at(o->cmd, k)->arg) return 0;
+    for (int i = 0; i + 1 < o->argc; i++) {
+        if (find_spec(o->cmd, o->argv[i]) != k) continue;
+        if (n < cap) out[n] = o->argv[i + 1];
+        n++;
+        i++;
+    }
+    return n;
+}
 
 static int bad_value(const pl_opts *o, const char *name, const char *want, const char *got)
 {

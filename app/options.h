@@ -29,6 +29,8 @@ typedef struct pl_opts {
     const char *value[PL_MAX_OPTIONS]; /* argument (or "" for a switch) when present */
     const char *positional[4];
     int npositional;
+    int argc;     /* the arguments parsed (for options given more than once) */
+    char **argv;
 } pl_opts;
 
 /* Parses argv (after the command name). Returns -1 on success; otherwise the exit code to
@@ -40,6 +42,9 @@ void pl_opts_print_help(FILE *f, const pl_command_help *cmd);
 /* Value of an option, or NULL when absent. */
 const char *pl_opts_get(const pl_opts *o, const char *name);
 int pl_opts_has(const pl_opts *o, const char *name);
+/* Every value of an option given more than once (--param a=1 --param b=2), in order; returns
+ * the count (at most cap are stored). */
+int pl_opts_all(const pl_opts *o, const char *name, const char **out, int cap);
 
 /* Converts an option's argument; prints "porelab CMD: --name must be ... (got 'x')" and
  * returns -1 when it is not a number in the range. Absent options leave *out unchanged and

@@ -16,6 +16,7 @@ typedef struct pl_lua_context {
     char scene_dir[PATH_MAX];  /* absolute, resolved */
     char out_dir[PATH_MAX];    /* absolute (may not exist until first written) */
     int trust;                 /* 1: sandbox lifted (--trust) */
+    struct pl_lua_run_inputs *run; /* --param and --seed, and the declared params (run_inputs.h) */
 } pl_lua_context;
 
 /* Stores ctx (owned by the caller, must outlive L) / fetches it. */

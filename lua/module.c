@@ -2,6 +2,7 @@
 #include "wrap.h"
 #include "lua_util.h"
 #include "scene_internal.h"
+#include "run_inputs.h"
 
 #include <lualib.h>
 #include <string.h>
@@ -58,6 +59,9 @@ static const luaL_Reg porelab_functions[] = {{"world", pl_lua_world_new},
                                              {"csv", pl_lua_csv_new},
                                              {"flags", p_flags},
                                              {"error", p_error},
+                                             {"params", pl_lua_p_params},
+                                             {"seed", pl_lua_p_seed},
+                                             {"mix_seed", pl_lua_p_mix_seed},
                                              {NULL, NULL}};
 
 static int luaopen_porelab(lua_State *L)

@@ -6,6 +6,7 @@
 #include "lua_util.h"
 #include "sandbox.h"
 #include "scene_internal.h"
+#include "run_inputs.h"
 #include "wrap.h"
 
 #include <errno.h>
@@ -53,6 +54,7 @@ struct pl_scene {
     int in_main;         /* running the scene file (for messages) */
     int return_line;     /* line of the scene's final return, 0 when unknown */
     char result_where[PATH_MAX + 32];
+    pl_lua_run_inputs run; /* --param, --seed and the declared parameters */
 };
 
 /* Copies src into dst with control characters shown as \xNN (terminal escape codes in a
@@ -513,6 +515,13 @@ pl_scene *pl_scene_create(const pl_scene_options *opt)
     else
         pl_path_join(s->ctx.out_dir, PATH_MAX, cwd, opt->out_dir);
     s->ctx.trust = opt->trust;
+    s->ctx.run = &s->run;
+    s->run.seed = opt->seed;
+    for (int i = 0; i < opt->nparams && i < PL_RUN_MAX_OVERRIDES; i++) {
+        snprintf(s->run.over_name[i], sizeof s->run.over_name[i], "%s", opt->param_names[i]);
+        s->run.over_value[i] = opt->param_values[i];
+        s->run.n_over = i + 1;
+    }
     if (!opt->trust) pl_scene_set_limits(s, PL_SCENE_DEFAULT_MAX_CPU, PL_SCENE_DEFAULT_MAX_MEMORY);
     s->L = lua_newstate(scene_alloc, s);
     if (!s->L) {
@@ -524,19 +533,27 @@ pl_scene *pl_scene_create(const pl_scene_options *opt)
     pl_lua_open_porelab(s->L);
     hook_coroutines(s->L);
     pl_lua_install_sandbox(s->L);
+    /* math.random follows the run seed too (Lua seeds it from the clock otherwise) */
+    if (lua_getglobal(s->L, "math") == LUA_TTABLE && lua_getfield(s->L, -1, "randomseed") == LUA_TFUNCTION) {
+        lua_pushinteger(s->L, (lua_Integer)pl_lua_mix_seed(s->L, 1));
+        lua_pcall(s->L, 1, 0, 0);
+    } else {
+        lua_pop(s->L, 1);
+    }
+    lua_pop(s->L, 1);
     return s;
 }
 
 static const char *const result_fields[] = {"world", "render", "run", "on_frame",
-                                            "on_finish", "params", NULL};
+                                            "on_finish", "params", "results", NULL};
 
 static const char *const param_fields[] = {"name", "unit", "value", "min", "max", "step",
-                                           "set", NULL};
+                                           "set", "doc", NULL};
 
 /* Validates the parameter list at index t (a list of {name, value, min, max, step, unit,
  * set}) and copies it into out (when not NULL). Raises Lua errors naming the entry and the
  * field; returns the count. */
-static int check_params(lua_State *L, int t, pl_scene_param *out)
+int pl_lua_check_param_list(lua_State *L, int t, pl_scene_param *out, int need_set)
 {
     t = lua_absindex(L, t);
     if (!lua_istable(L, t))
@@ -593,7 +610,8 @@ static int check_params(lua_State *L, int t, pl_scene_param *out)
             return luaL_error(L, "%s (%s): step must be in (0, max - min] = (0, %f] (got %f)", what,
                               p.name, p.max - p.min, p.step);
         if (!has_step) p.step = (p.max - p.min) / 20.0;
-        if (lua_getfield(L, e, "set") != LUA_TFUNCTION)
+        int st = lua_getfield(L, e, "set");
+        if (st != LUA_TFUNCTION && (need_set || st != LUA_TNIL))
             return luaL_error(L, "%s (%s): set must be a function(world, value) (got %s)", what,
                               p.name, luaL_typename(L, -1));
         lua_pop(L, 2);
@@ -621,7 +639,7 @@ static int check_result(lua_State *L)
         return luaL_error(L, "scene result: world must be the world built by porelab.world "
                              "(got %s)", luaL_typename(L, -1));
     lua_getfield(L, 2, "params");
-    if (!lua_isnil(L, -1)) check_params(L, -1, NULL);
+    if (!lua_isnil(L, -1)) pl_lua_check_param_list(L, -1, NULL, 1);
     lua_pop(L, 1);
     s->world_ref = luaL_ref(L, LUA_REGISTRYINDEX);
     lua_pushvalue(L, 2);
@@ -781,12 +799,22 @@ int pl_scene_run_settings(pl_scene *s, pl_scene_run *out)
     return pl_scene_read_field(s, "run", read_run, out);
 }
 
+/* Pushes the global name without metamethods (outside a protected call a scene's erroring
+ * __index on _G must not reach the C API unprotected). */
+static void raw_global(lua_State *L, const char *name)
+{
+    lua_pushglobaltable(L);
+    lua_pushstring(L, name);
+    lua_rawget(L, -2);
+    lua_remove(L, -2);
+}
+
 /* Pushes the parameter list: result.params, else the global PARAMS (nil when neither). */
 static void push_params(pl_scene *s)
 {
     if (pl_scene_push_result_field(s, "params") == LUA_TNIL) {
         lua_pop(s->L, 1);
-        lua_getglobal(s->L, "PARAMS");
+        raw_global(s->L, "PARAMS");
     }
 }
 
@@ -798,7 +826,7 @@ typedef struct params_ud {
 static int read_params(lua_State *L)
 {
     params_ud *ud = lua_touserdata(L, 1);
-    ud->n = lua_isnil(L, 2) ? 0 : check_params(L, 2, ud->out);
+    ud->n = lua_isnil(L, 2) ? 0 : pl_lua_check_param_list(L, 2, ud->out, 1);
     return 0;
 }
 
@@ -875,4 +903,169 @@ void pl_scene_destroy(pl_scene **sp)
     s->L = NULL;
     free(*sp);
     *sp = NULL;
+}
+
+/* ------------------------------------------------------------ run inputs and results */
+
+long long pl_scene_seed(const pl_scene *s) { return s->run.seed; }
+
+static void list_declared(const pl_scene *s, char *buf, size_t n)
+{
+    size_t k = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < s->run.ndeclared && k + 1 < n; i++) {
+        const pl_scene_param *p = &s->run.declared[i];
+        k += (size_t)snprintf(buf + k, n - k, "%s%s in [%g, %g]%s%s", i ? ", " : "", p->name, p->min, p->max,
+                              p->unit[0] ? " " : "", p->unit);
+    }
+}
+
+int pl_scene_apply_params(pl_scene *s)
+{
+    pl_lua_run_inputs *r = &s->run;
+    pl_scene_param live[PL_SCENE_MAX_PARAMS];
+    int nlive = 0;
+    if (s->declarative) {
+        nlive = pl_scene_params(s, live);
+        if (nlive < 0) return -1;
+    }
+    int base = r->ndeclared;
+    for (int i = 0; i < nlive && r->ndeclared < 2 * PL_SCENE_MAX_PARAMS; i++) {
+        r->declared[r->ndeclared] = live[i];
+        r->overridden[r->ndeclared++] = 0;
+    }
+    for (int k = 0; k < r->n_over; k++) {
+        if (r->over_used[k]) continue;
+        int found = -1;
+        for (int i = base; i < r->ndeclared; i++)
+            if (strcmp(r->declared[i].name, r->over_name[k]) == 0) found = i;
+        double v = r->over_value[k];
+        if (found < 0) {
+            char list[2048];
+            list_declared(s, list, sizeof list);
+            if (r->ndeclared == 0)
+                pl_scene_set_error(s, "--param %s=%g: %s declares no parameters (porelab.params{...} or the "
+                                   "result's params list; docs/scene-reference.md)", r->over_name[k], v, s->ctx.scene_path);
+            else
+                pl_scene_set_error(s, "--param %s=%g: %s declares no parameter '%s'; its parameters: %s",
+                                   r->over_name[k], v, s->ctx.scene_path, r->over_name[k], list);
+            return -1;
+        }
+        pl_scene_param *p = &r->declared[found];
+        if (!(v >= p->min && v <= p->max)) {
+            pl_scene_set_error(s, "--param %s=%g: %s must be in [%g, %g]%s%s", p->name, v, p->name, p->min,
+                               p->max, p->unit[0] ? " " : "", p->unit);
+            return -1;
+        }
+        if (pl_scene_set_param(s, found - base, v) != 0) return -1;
+        p->value = v;
+        r->overridden[found] = 1;
+        r->over_used[k] = 1;
+    }
+    return 0;
+}
+
+int pl_scene_declared_params(pl_scene *s, pl_scene_param *out, int *overridden, int cap)
+{
+    int n = s->run.ndeclared < cap ? s->run.ndeclared : cap;
+    for (int i = 0; i < n; i++) {
+        out[i] = s->run.declared[i];
+        if (overridden) overridden[i] = s->run.overridden[i];
+    }
+    return n;
+}
+
+typedef struct results_ud {
+    pl_scene_result *out;
+    int n;
+} results_ud;
+
+static int cmp_result(const void *a, const void *b)
+{
+    return strcmp(((const pl_scene_result *)a)->name, ((const pl_scene_result *)b)->name);
+}
+
+/* index 1: results_ud, 2: the results value (table, function or nil), 3: the world (or nil) */
+static int read_results(lua_State *L)
+{
+    results_ud *ud = lua_touserdata(L, 1);
+    ud->n = 0;
+    if (lua_isfunction(L, 2)) {
+        lua_pushvalue(L, 2);
+        lua_pushvalue(L, 3);
+        lua_call(L, 1, 1);
+        if (!lua_istable(L, -1))
+            return luaL_error(L, "results: the function must return a table {name = value, ...} (got %s)",
+                              luaL_typename(L, -1));
+        lua_replace(L, 2);
+    }
+    if (lua_isnil(L, 2)) return 0;
+    if (!lua_istable(L, 2))
+        return luaL_error(L, "results must be a table {name = value, ...} or a function(world) returning one (got %s)",
+                          luaL_typename(L, 2));
+    lua_pushnil(L);
+    while (lua_next(L, 2)) {
+        if (lua_type(L, -2) != LUA_TSTRING)
+            return luaL_error(L, "results: names must be strings (got a %s key)", luaL_typename(L, -2));
+        const char *name = lua_tostring(L, -2);
+        size_t len = strlen(name);
+        int ok_name = len > 0 && len < 48;
+        for (size_t i = 0; i < len; i++)
+            if (!((name[i] >= 'a' && name[i] <= 'z') || (name[i] >= 'A' && name[i] <= 'Z') ||
+                  (name[i] >= '0' && name[i] <= '9') || name[i] == '_'))
+                ok_name = 0;
+        if (!ok_name)
+            return luaL_error(L, "results: '%s' is not a usable name (letters, digits and _, at most 47)", name);
+        if (ud->n >= PL_SCENE_MAX_RESULTS)
+            return luaL_error(L, "results: at most %d values", PL_SCENE_MAX_RESULTS);
+        pl_scene_result *r = &ud->out[ud->n];
+        memset(r, 0, sizeof *r);
+        snprintf(r->name, sizeof r->name, "%s", name);
+        int v = lua_gettop(L);
+        if (lua_istable(L, v)) {
+            static const char *const fields[] = {"value", "unit", NULL};
+            char what[64];
+            snprintf(what, sizeof what, "results.%s", name);
+            pl_lua_check_fields(L, v, what, fields);
+            if (lua_getfield(L, v, "unit") == LUA_TSTRING)
+                snprintf(r->unit, sizeof r->unit, "%s", lua_tostring(L, -1));
+            else if (!lua_isnil(L, -1))
+                return luaL_error(L, "results.%s: unit must be a string (got %s)", name, luaL_typename(L, -1));
+            lua_pop(L, 1);
+            lua_getfield(L, v, "value");
+            lua_replace(L, v);
+        }
+        if (lua_type(L, v) == LUA_TNUMBER) {
+            r->kind = 0;
+            r->value = lua_tonumber(L, v);
+        } else if (lua_isboolean(L, v)) {
+            r->kind = 1;
+            r->value = lua_toboolean(L, v);
+        } else if (lua_type(L, v) == LUA_TSTRING) {
+            r->kind = 2;
+            snprintf(r->text, sizeof r->text, "%s", lua_tostring(L, v));
+        } else {
+            return luaL_error(L, "results.%s must be a number, a boolean, a string or {value = number, unit = "
+                                 "\"...\"} (got %s)", name, luaL_typename(L, v));
+        }
+        ud->n++;
+        lua_settop(L, v - 1);
+    }
+    qsort(ud->out, (size_t)ud->n, sizeof *ud->out, cmp_result);
+    return 0;
+}
+
+int pl_scene_results(pl_scene *s, pl_scene_result out[PL_SCENE_MAX_RESULTS])
+{
+    results_ud ud = {out, 0};
+    lua_pushcfunction(s->L, read_results);
+    lua_pushlightuserdata(s->L, &ud);
+    if (pl_scene_push_result_field(s, "results") == LUA_TNIL) {
+        lua_pop(s->L, 1);
+        raw_global(s->L, "RESULTS");
+    }
+    if (s->world_ref != LUA_NOREF) lua_rawgeti(s->L, LUA_REGISTRYINDEX, s->world_ref);
+    else lua_pushnil(s->L);
+    if (protected_call(s, 3, 0) != 0) return -1;
+    return ud.n;
 }

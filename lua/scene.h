@@ -17,6 +17,10 @@ typedef struct pl_scene_options {
     const char *path;    ///< scene file (.lua); required
     const char *out_dir; ///< output folder for frames and CSV (created on first write); required
     int trust;           ///< 1 lifts the sandbox (--trust)
+    long long seed;      ///< run seed (--seed); 0 keeps the scene's own seeds as written
+    int nparams;         ///< parameter overrides (--param name=value), at most 32
+    const char *const *param_names;
+    const double *param_values;
 } pl_scene_options;
 
 /// Limits on the scene's code. A sandboxed scene starts with the defaults below, a trusted
@@ -92,6 +96,31 @@ int pl_scene_set_param(pl_scene *s, int i, double value);
 /// What porelab chose for world{fluid = "auto"} and why (the rejected models too), and warnings
 /// about a fixed model used past its assumptions: lines ending in '\n', "" when none.
 const char *pl_scene_fluid_notes(pl_scene *s);
+/// After pl_scene_load: applies the --param overrides that porelab.params did not take to the
+/// result's params list (calling set(world, value) before the first step), checking each
+/// against its range. Returns 0, or -1 with "--param x=1: ..." (unknown name: the message lists
+/// the declared parameters with their ranges) in pl_scene_error.
+int pl_scene_apply_params(pl_scene *s);
+/// The declared parameters (porelab.params, then the result's params list) with the values
+/// the run uses; overridden[i] = 1 when --param set it. Returns the count (<= cap).
+int pl_scene_declared_params(pl_scene *s, pl_scene_param *out, int *overridden, int cap);
+/// The run seed (0: the scene's own seeds).
+long long pl_scene_seed(const pl_scene *s);
+
+/// One value the scene reports as its result (docs/scene-reference.md, "Results").
+typedef struct pl_scene_result {
+    char name[48];
+    char unit[24];
+    int kind;       ///< 0 number, 1 boolean (value 0/1), 2 string (text)
+    double value;
+    char text[128];
+} pl_scene_result;
+#define PL_SCENE_MAX_RESULTS 64
+/// Reads the scene's results: the result table's `results` (a table, or a function(world)
+/// returning one, called now), else the global RESULTS; each entry name = number | boolean |
+/// string | {value = number, unit = "mm"}; sorted by name. Returns the count (0 when none), or
+/// -1 with "scene.lua:LINE: results.x: ..." in pl_scene_error.
+int pl_scene_results(pl_scene *s, pl_scene_result out[PL_SCENE_MAX_RESULTS]);
 
 /// The scene path as given (for messages).
 const char *pl_scene_path(const pl_scene *s);

@@ -6,6 +6,7 @@
  * Each also takes the common body fields (material, motion, fixed, velocity, omega, angle, id);
  * `angle` turns the generated outline about its centroid. */
 #include "wrap.h"
+#include "run_inputs.h"
 #include "lua_util.h"
 #include "porelab/shapes.h"
 
@@ -113,7 +114,7 @@ int pl_lua_w_random_polygon(lua_State *L)
     const lua_Integer seed = lua_tointeger(L, -1);
     lua_pop(L, 1);
     pl_rng rng;
-    pl_rng_seed(&rng, (uint64_t)seed);
+    pl_rng_seed(&rng, pl_lua_mix_seed(L, (uint64_t)seed)); /* the run seed feeds it too */
     pl_vec2 v[PL_MAX_POLY_VERTICES];
     char err[256] = "";
     const int n = pl_shape_random_polygon(&r, &rng, c, v, PL_MAX_POLY_VERTICES, err, sizeof err);

@@ -129,7 +129,7 @@ static int log_event(pl_wsim *sim, pl_wevent e)
 /* Loads the scene into fresh state; on success replaces the current one. */
 static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
 {
-    pl_scene_options so = {sim->o->positional[0], sim->out_dir, pl_opts_has(sim->o, "--trust")};
+    pl_scene_options so = {sim->o->positional[0], sim->out_dir, pl_opts_has(sim->o, "--trust"), 0, 0, NULL, NULL};
     pl_scene *s = pl_scene_create(&so);
     if (!s) {
         snprintf(sim->error, sizeof sim->error, "out of memory while creating the Lua state");

@@ -13,12 +13,21 @@
 -- during shaking above 0.9 in the loose saturated tank and below 0.5 in the dense one, exactly
 -- 0 in the dry one; the loose saturated tank's pipe floats up and its building sinks more than
 -- the dry tank's.
+-- Parameter: amp_mm (porelab run --param amp_mm=5: 0.5 g); --seed N rains other packings.
+-- Results (manifest.json; the ensemble: docs/soil.md §5.3, docs/scaling.md): ru_peak, ru_end
+-- (loose saturated free field), dense_ru_peak, settlement_mm / dry_settlement_mm /
+-- dense_settlement_mm, pipe_rise_mm / dry_pipe_rise_mm, criteria_met.
 --   porelab run scenes/soil/liquefaction.lua
 local packing = require "porelab.packing"
 
+local P = porelab.params {
+  { name = "amp_mm", unit = "mm", value = 3.5, min = 0.5, max = 8,
+    doc = "shaking amplitude at 5 Hz (3.5 mm: 0.35 g; 5 mm: 0.5 g)" },
+}
+
 local WT, GAP = 0.22, 0.05          -- tank width and gap between tanks, m
 local HS = 0.12                     -- water surface (mesh top) above each tank floor, m
-local A, F = 0.0035, 5.0             -- shaking amplitude (m) and frequency (Hz): 0.35 g
+local A, F = P.amp_mm / 1000, 5.0    -- shaking amplitude (m) and frequency (Hz): 0.35 g by default
 local K_SAND = 1e-5                -- m/s: conductivity of the packed sand once settled (a fine sand)
 local T_BUILD, T_SHAKE, T_STOP, T_END = 0.9, 1.4, 5.4, 6.2
 -- coupling on (and the packed sand's conductivity) 0.2 s after the building is set, once its
@@ -148,6 +157,7 @@ local log = porelab.csv("ru.csv", { "t", "tank", "du_free", "sigma_v0_free", "ru
                                     "ru_layer_period_mean", "ru_under_period_mean", "building_y",
                                     "building_tilt_deg", "pipe_y", "water_up_mm" })
 local placed, coupled, dense_done, ref_done, shaking = false, false, false, false, false
+local summary -- the results, filled by on_finish
 
 return {
   world = w,
@@ -310,6 +320,31 @@ return {
                         .. "consolidation source %.2f s (%d updates)", fs.t_porosity, fs.t_assembly, fs.t_factor,
                         fs.t_solve, fs.t_forces, ss.t_source, fs.updates))
     if world:time() >= T_END - 1e-6 then
+      local loose, dense = tanks[1].g.free, tanks[3].g.free
+      local rise, sink = {}, {}
+      for k, tk in ipairs(tanks) do
+        rise[k] = select(2, tk.pipe:position()) - tk.pipe_y0
+        sink[k] = tk.y0 - select(2, tk.building:position())
+      end
+      local dry_zero = true
+      for _, name in ipairs(GAUGES) do
+        local g = tanks[2].g[name]
+        dry_zero = dry_zero and g.peak == 0 and g.du == 0
+      end
+      summary = {
+        ru_peak = loose.peak, ru_end = loose.mean, dense_ru_peak = dense.peak,
+        settlement_mm = { value = 1000 * sink[1], unit = "mm" },
+        dry_settlement_mm = { value = 1000 * sink[2], unit = "mm" },
+        dense_settlement_mm = { value = 1000 * sink[3], unit = "mm" },
+        pipe_rise_mm = { value = 1000 * rise[1], unit = "mm" },
+        dry_pipe_rise_mm = { value = 1000 * rise[2], unit = "mm" },
+        criteria_met = loose.peak > 0.9 and dense.peak < 0.5 and rise[1] > 0.005 and rise[1] - rise[2] > 0.005
+                       and sink[1] - sink[2] > 0.005 and dry_zero,
+      }
+    end
+    -- with the default amplitude and packings (the ctest) the criteria are asserted; in a sweep
+    -- they are reported (criteria_met) and the run goes on
+    if world:time() >= T_END - 1e-6 and P.amp_mm == 3.5 and porelab.seed() == 0 then
       -- the scene's point, checked (ctest soil_liquefaction runs it whole) on the free-field
       -- gauge's period mean, with the issue's thresholds; measured over six packings at 0.35 g
       -- (docs/soil.md §5.3): loose saturated peak during shaking 0.92-1.09, dense peak <= 0,
@@ -343,4 +378,5 @@ return {
                           1000 * rise[1], 1000 * rise[2], 1000 * sink[1], 1000 * sink[2]))
     end
   end,
+  results = function() return summary or {} end,
 }

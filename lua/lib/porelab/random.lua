@@ -1,5 +1,8 @@
 -- porelab.random: a small deterministic random number generator (SplitMix64 on Lua 5.4
 -- integers), so that scenes produce the same packing on every machine and Lua build.
+-- The run seed (porelab run --seed N, docs/scene-reference.md) feeds every generator: with
+-- N = 0 (the default) a generator's stream is its seed as written, otherwise a mix of both,
+-- so that one scene gives a new packing per run seed and the same one for the same seed.
 --   local rng = require("porelab.random").new(42)
 --   rng:uniform()        -- in [0, 1)
 --   rng:uniform(a, b)    -- in [a, b)
@@ -14,7 +17,9 @@ function random.new(seed)
   if seed ~= nil and math.type(seed) ~= "integer" then
     error("random.new: seed must be an integer (got " .. tostring(seed) .. ")", 2)
   end
-  return setmetatable({ state = (seed or 1) ~ 0x5DEECE66D }, Rng)
+  local s = seed or 1
+  if porelab and porelab.mix_seed then s = porelab.mix_seed(s) end
+  return setmetatable({ state = s ~ 0x5DEECE66D }, Rng)
 end
 
 local function next_int(self)
