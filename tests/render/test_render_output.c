@@ -28,6 +28,24 @@ static int starts_with(const char *path, const char *magic) {
     return n >= strlen(magic) && memcmp(buf, magic, strlen(magic)) == 0;
 }
 
+/* 1 when the file contains the byte string (binary-safe). */
+static int file_contains(const char *path, const char *needle) {
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    int found = 0;
+    if (buf && fread(buf, 1, (size_t)n, f) == (size_t)n) {
+        size_t k = strlen(needle);
+        for (long i = 0; i + (long)k <= n && !found; i++) found = memcmp(buf + i, needle, k) == 0;
+    }
+    free(buf);
+    fclose(f);
+    return found;
+}
+
 static int test_stills_three_formats(void) {
     pl_world *w = make_pile_world();
     ENSURE(w != NULL);
@@ -40,6 +58,15 @@ static int test_stills_three_formats(void) {
     ENSURE(starts_with(PL_RENDER_OUT_DIR "/still.png", "\x89PNG"));
     ENSURE(starts_with(PL_RENDER_OUT_DIR "/still.svg", "<?xml"));
     ENSURE(starts_with(PL_RENDER_OUT_DIR "/still.pdf", "%PDF-"));
+    /* real text: <text> elements in the SVG (its words readable in the file), an embedded
+     * TrueType font with a Unicode map in the PDF */
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.svg", "<text "));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.svg", ">t = 0.000 s</text>") ||
+           file_contains(PL_RENDER_OUT_DIR "/still.svg", "> s</text>"));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.svg", "font-family=\"DejaVu Sans\""));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.pdf", "/FontFile"));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.pdf", "/ToUnicode"));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.pdf", "DejaVuSans"));
     pl_image img = {0, 0, NULL};
     ENSURE(pl_png_read(PL_RENDER_OUT_DIR "/still.png", &img, err, sizeof err) == 0);
     ENSURE(img.width == 800 && img.height == 600);
