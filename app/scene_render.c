@@ -16,7 +16,7 @@ static const char *const render_fields[] = {
     "size", "camera", "margin", "layers", "background", "colors", "wall_color",
     "force_color", "force_scale", "force_threshold", "force_max_width", "color_by", "title",
     "color_range", "fluid_field", "fluid_range", "isolines", "velocity_scale", "time_offset",
-    "overlay", NULL};
+    "overlay", "excess_reference", "record_from", NULL};
 
 static int hex_digit(char c)
 {
@@ -201,6 +201,14 @@ static void read_field_options(lua_State *L, pl_render_options *o)
     PL_LUA_CHECK(L, o->velocity_scale >= 0, fn, "velocity_scale",
                  ">= 0 m per m/s (0 = automatic)", o->velocity_scale);
     o->time_offset = pl_lua_field_number(L, 2, fn, "time_offset", o->time_offset);
+    if (pl_lua_has_field(L, 2, "excess_reference")) {
+        o->excess_reference = pl_lua_field_number(L, 2, fn, "excess_reference", 0.0);
+        PL_LUA_CHECK(L, isfinite(o->excess_reference), fn, "excess_reference",
+                     "a finite head in m", o->excess_reference);
+        o->has_excess_reference = 1;
+    }
+    o->record_from = pl_lua_field_number(L, 2, fn, "record_from", o->record_from);
+    PL_LUA_CHECK(L, o->record_from >= 0, fn, "record_from", ">= 0 s", o->record_from);
 }
 
 static int read_render(lua_State *L)

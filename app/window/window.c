@@ -167,7 +167,7 @@ static int build_scene(win *g)
     int rc = pl_render_scene_capture(&g->rs, g->sim.w);
     g->rs_fluid = 0;
     if (rc == 0 && (g->sim.ropt.layers & fluid_layers)) {
-        rc = pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
+        rc = pl_render_scene_capture_fluid_opt(&g->rs, g->sim.w, &g->sim.ropt);
         g->rs_fluid = 1;
     }
     if (rc != 0) snprintf(err, sizeof err, "out of memory while reading the world");
@@ -651,7 +651,7 @@ int pl_window_main(const pl_opts *o)
         if (g->show_hud) {
             pl_render_scene_stress(&g->rs);
             if (!g->rs_fluid && pl_world_prepare(g->sim.w) == PL_OK && pl_world_fluid_node_count(g->sim.w) > 0)
-                pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
+                pl_render_scene_capture_fluid_opt(&g->rs, g->sim.w, &g->sim.ropt);
             g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
         }
         build_hud(g);
