@@ -232,6 +232,8 @@ void pl_fluid_label_obstacles(pl_obstacles *o, const pl_draw_list *dl, const pl_
     pl_vec2 px[64];
     for (int i = 0; i < s->body_count && (opt->layers & PL_LAYER_BODIES); i++) {
         const pl_body_info *b = &s->bodies[i];
+        if (b->material >= 0 && b->material < 32 && (opt->hidden_materials >> b->material) & 1u)
+            continue;
         if (b->shape == PL_SHAPE_DISC) {
             if (b->motion == PL_MOTION_DYNAMIC && b->radius <= 3.0 * rgrain) continue;
             pl_obstacles_add_circle(o, pl_camera_to_px(cam, b->position), b->radius * cam->scale + 1.0);

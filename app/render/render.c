@@ -47,6 +47,7 @@ pl_render_options pl_default_render_options(void) {
     o.has_excess_reference = 0;
     o.excess_reference = 0.0;
     o.record_from = 0.0;
+    o.hidden_materials = 0;
     return o;
 }
 
@@ -232,6 +233,7 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
         int any_fixed = 0;
         for (int m = 0; m < s->material_count && legend_n < PL_RENDER_MAX_MATERIAL_COLORS; m++) {
             int used = 0;
+            if (m < 32 && (opt->hidden_materials >> m) & 1u) continue;
             for (int i = 0; i < s->body_count && !used; i++)
                 used = s->bodies[i].material == m && s->bodies[i].motion == PL_MOTION_DYNAMIC &&
                        s->bodies[i].shape != PL_SHAPE_SEGMENT;
