@@ -21,7 +21,7 @@ for _, wall in pairs(box) do
   wall:shake { amplitude = { 0.008, 0.004 }, frequency = 6, start = settle }
 end
 
-local csv = porelab.csv("table.csv", { "t", "table_x", "kinetic", "coordination" })
+local csv = porelab.csv("table.csv", { "t", "table_x", "kinetic", "coordination" }, { "s", "m", "J", "" })
 return {
   world = w,
   run = { t_end = 4.0, fps = 30 },

@@ -116,7 +116,8 @@ local function u_series(Z, Tv) -- Z = distance from the drained boundary / H
   return s
 end
 
-local log = porelab.csv("consolidation.csv", { "t", "column", "settlement", "u_top", "u_mid", "u_bottom", "u_column" })
+local log = porelab.csv("consolidation.csv", { "t", "column", "settlement", "u_top", "u_mid", "u_bottom", "u_column" },
+                        { "s", "", "m", "Pa", "Pa", "Pa", "Pa" })
 local seated, loaded = false, false
 
 -- analysis of one column: M, B, c_v, s0 and U, u at the requested T_v (linear interpolation

@@ -146,7 +146,8 @@ end
 
 local log = porelab.csv("ru.csv", { "t", "tank", "du_free", "sigma_v0_free", "ru_free", "ru_free_period_mean",
                                     "ru_layer_period_mean", "ru_under_period_mean", "building_y",
-                                    "building_tilt_deg", "pipe_y", "water_up_mm" })
+                                    "building_tilt_deg", "pipe_y", "water_up_mm" },
+                        { "s", "", "Pa", "Pa", "", "", "", "", "m", "deg", "m", "mm" })
 local placed, coupled, dense_done, ref_done, shaking = false, false, false, false, false
 
 return {

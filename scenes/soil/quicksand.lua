@@ -62,7 +62,8 @@ for i = 1, w:body_count() do
 end
 
 local log = porelab.csv("quicksand.csv", { "t", "level", "gradient", "i_c", "sigma_v_eff_mid", "u_excess_mid",
-                                           "expansion_mm", "block_settlement_mm" })
+                                           "expansion_mm", "block_settlement_mm" },
+                        { "s", "", "", "", "Pa", "Pa", "mm", "mm" })
 local st = { level = 0, placed = false }
 local function head_at(y)
   local s, n = 0, 0

@@ -278,7 +278,8 @@ end
 for _, row in ipairs(rows) do
   row.csv = porelab.csv("simple_shear_" .. row.kind .. ".csv",
     { "t", "gamma", "tau_servo", "tau_cv", "tau_und", "sv_servo", "sv_cv", "sv_und", "dh_servo", "dh_und",
-      "u_top", "u_bottom", "u_lid", "drop_sv_cv", "tau_int_servo", "tau_int_cv", "tau_int_und" })
+      "u_top", "u_bottom", "u_lid", "drop_sv_cv", "tau_int_servo", "tau_int_cv", "tau_int_und" },
+    { "s", "", "Pa", "Pa", "Pa", "Pa", "Pa", "Pa", "", "", "Pa", "Pa", "Pa", "Pa", "Pa", "Pa", "Pa" })
   row.hist = {}
   row.sv0 = {}
   for _, col in ipairs(COLS) do row.sv0[col] = measure(row.box[col]).sv end

@@ -105,7 +105,7 @@ pl_cli_test(imperative_assert_fails RC 1 ARGS run ${PL_BAD}/failing_assert.lua -
 pl_cli_test(imperative_csv RC 0
   ARGS run scenes/examples/imperative.lua --out ${PL_CLI_OUT}/imperative
   MATCH "ran to completion"
-  EXPECT_FILE ${PL_CLI_OUT}/imperative/bounce.csv FILE_MATCH "^t,y,vy,contacts\n[0-9]")
+  EXPECT_FILE ${PL_CLI_OUT}/imperative/bounce.csv FILE_MATCH "^# porelab [0-9.]+, scene [^\n]*, written [0-9T:Z-]+\nt,y,vy,contacts\n[0-9]")
 
 # Determinism: same scene twice, same state hash (and a different one a step later).
 add_test(NAME cli_determinism COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
@@ -124,7 +124,7 @@ pl_cli_test(run_flags_defaults RC 0 ARGS info scenes/five_discs.lua
   MATCH2 "frames +51, one every 100 steps \\(from flag PRINT_INT\\)")
 pl_cli_test(run_hook_csv RC 0
   ARGS run scenes/disc_on_plate.lua --until 0.5 --quiet --out ${PL_CLI_OUT}/plate
-  EXPECT_FILE ${PL_CLI_OUT}/plate/contact_force.csv FILE_MATCH "^t,fn\n0,0\n0.05,")
+  EXPECT_FILE ${PL_CLI_OUT}/plate/contact_force.csv FILE_MATCH "^# porelab [^\n]*state hash [0-9a-f]+ at t = 0 s[^\n]*\nt \\(s\\),fn \\(N\\)\n0,0\n0.05,")
 pl_cli_test(run_hash RC 0 ARGS run scenes/two_disc_impact.lua --steps 10 --quiet --hash
   --out ${PL_CLI_OUT}/hash
   MATCH "\nstate-hash: [0-9a-f]+\n$")
