@@ -157,11 +157,16 @@ pl_cli_test(unknown_option RC 2 ARGS run scenes/demo.lua --fast
 pl_cli_test(unknown_command RC 2 ARGS simulate scenes/demo.lua
   MATCH "unknown command 'simulate'; valid commands: run still info flags")
 
-# VTK series for ParaView: one .vtu per frame and a .pvd index listing them.
+# VTK series for ParaView: one .vtu per frame and part, one run.pvd listing them all; bodies
+# carry their radius and material name.
 pl_cli_test(run_vtk RC 0
   ARGS run scenes/five_discs.lua --steps 20 --every 10 --quiet --vtk --out ${PL_CLI_OUT}/vtk
-  EXPECT_FILE ${PL_CLI_OUT}/vtk/bodies.pvd
-  FILE_MATCH "frame_000000_bodies.vtu.*frame_000001_bodies.vtu.*frame_000002_bodies.vtu")
+  EXPECT_FILE ${PL_CLI_OUT}/vtk/run.pvd
+  FILE_MATCH "part=\"0\" name=\"bodies\" file=\"vtk/frame_000000_bodies.vtu.*part=\"1\" name=\"contacts\" file=\"vtk/frame_000000_contacts.vtu.*frame_000002_bodies.vtu")
+pl_cli_test(run_vtk_bodies RC 0
+  ARGS run scenes/five_discs.lua --steps 20 --every 10 --quiet --vtk --out ${PL_CLI_OUT}/vtk_bodies
+  EXPECT_FILE ${PL_CLI_OUT}/vtk_bodies/vtk/frame_000000_bodies.vtu
+  FILE_MATCH "Name=\"radius\" format=\"ascii\">\n[0-9.e+-]+\n.*Name=\"material_name\" format=\"ascii\">\n114 111 99 107 0\n")
 
 # Boundary motions and diagnostics from Lua: bad ranges name the argument.
 pl_cli_test(bad_shake_frequency RC 1 ARGS run ${PL_BAD}/bad_shake.lua --quiet
