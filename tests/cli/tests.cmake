@@ -352,3 +352,9 @@ add_test(NAME cli_still_from_state
           -DSTEPS=600 -DEVERY=0.03 -DAT=0.1 -P ${PL_CLI_DIR}/still_from_state.cmake
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 set_tests_properties(cli_still_from_state PROPERTIES LABELS cli TIMEOUT 120)
+
+# Every command of the ```sh quick blocks of README.md and docs/*.md runs as written (with the
+# built porelab on PATH, in a scratch copy of the layout; tests/cli/docs_commands.sh).
+add_test(NAME docs_commands COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/docs_commands.sh
+         ${CMAKE_SOURCE_DIR} $<TARGET_FILE_DIR:porelab> ${PL_CLI_OUT}/docs_commands)
+set_tests_properties(docs_commands PROPERTIES LABELS cli TIMEOUT 300)
