@@ -48,6 +48,7 @@ pl_render_options pl_default_render_options(void) {
     o.excess_reference = 0.0;
     o.record_from = 0.0;
     o.hidden_materials = 0;
+    o.reserve_right = 0;
     return o;
 }
 
@@ -186,6 +187,9 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
         snprintf(err, errlen, "image size %dx%d is out of range (16..16384 pixels each side)", W, H);
         return -1;
     }
+    int W_img = W;
+    /* a host's panel at the right edge: everything of the scene is laid out left of it */
+    if (opt->reserve_right > 0 && opt->reserve_right < W - 64) W -= opt->reserve_right;
     pl_draw_list_clear(dl);
     dl->background = opt->background;
     unsigned L = opt->layers;
@@ -263,9 +267,9 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     if (right_w > 0.45 * W) right_w = 0.45 * W;
     pl_px_rect area = {0.0, top_h, W - right_w, H - bot_h};
     if (opt->auto_camera || !(opt->view_hi.x > opt->view_lo.x) || !(opt->view_hi.y > opt->view_lo.y))
-        dl->camera = pl_camera_fit(s->lo, s->hi, W, H, area, opt->margin);
+        dl->camera = pl_camera_fit(s->lo, s->hi, W_img, H, area, opt->margin);
     else
-        dl->camera = pl_camera_fit(opt->view_lo, opt->view_hi, W, H, area, 0.0);
+        dl->camera = pl_camera_fit(opt->view_lo, opt->view_hi, W_img, H, area, 0.0);
     dl->clip = area;
     dl->has_clip = 1;
 

@@ -75,6 +75,8 @@ typedef struct pl_render_options {
                               ///< (mean prescribed head)
     double record_from;       ///< frames before this world time (s) are not written (a run's
                               ///< preparation); the scene's hooks still run; default 0
+    int reserve_right;        ///< px at the right edge left to the host (a window's control panel):
+                              ///< the scene and its annotations stay left of it; default 0
     unsigned hidden_materials;///< bit m set: bodies of material m (< 32) are not drawn (numerical
                               ///< helpers such as mesh-confining slabs); default 0
 } pl_render_options;
