@@ -32,7 +32,7 @@ static const pl_opt_spec run_specs[] = {
     {"--quiet", "-q", NULL, "no progress bar and no summary"},
     {"--trust", NULL, NULL, "lift the sandbox (only for scenes you trust)"},
     {"--hash", NULL, NULL, "print the final state hash as 'state-hash: <16 hex digits>'"},
-    {"--vtk", NULL, NULL, "also write VTK files per frame (DIR/vtk/, indexed by DIR/*.pvd) for ParaView"},
+    {"--vtk", NULL, NULL, "also write VTK files per frame (DIR/vtk/, indexed by DIR/run.pvd) for ParaView"},
     {"--traceback", NULL, NULL, "print the Lua traceback with errors"},
     {"--renderer", NULL, "NAME", "cairo (default) or gl (OpenGL through OSMesa) for the frames"},
     {"--window", NULL, NULL, "open the live lab window instead of writing frames (porelab view)"},
@@ -295,7 +295,7 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir, p
     } else if (video && rc == PL_EXIT_OK && !quiet) {
         printf("  %-15s%s\n", "video", video);
     }
-    if (c.vtk && rc == PL_EXIT_OK && !quiet) printf("  %-15s%s/*.pvd (open in ParaView)\n", "vtk", out_dir);
+    if (c.vtk && rc == PL_EXIT_OK && !quiet) printf("  %-15s%s/run.pvd (open in ParaView)\n", "vtk", out_dir);
     pl_vtk_series_close(&c.vtk);
     if (pl_opts_has(o, "--hash")) pl_cli_print_hash(w);
     man->has_state = 1;

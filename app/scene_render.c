@@ -16,7 +16,7 @@ static const char *const render_fields[] = {
     "size", "camera", "margin", "layers", "background", "colors", "wall_color",
     "force_color", "force_scale", "force_threshold", "force_max_width", "color_by", "title",
     "color_range", "fluid_field", "fluid_range", "isolines", "velocity_scale", "time_offset",
-    "overlay", NULL};
+    "overlay", "excess_reference", "record_from", "hide", NULL};
 
 static int hex_digit(char c)
 {
@@ -201,6 +201,36 @@ static void read_field_options(lua_State *L, pl_render_options *o)
     PL_LUA_CHECK(L, o->velocity_scale >= 0, fn, "velocity_scale",
                  ">= 0 m per m/s (0 = automatic)", o->velocity_scale);
     o->time_offset = pl_lua_field_number(L, 2, fn, "time_offset", o->time_offset);
+    if (pl_lua_has_field(L, 2, "excess_reference")) {
+        o->excess_reference = pl_lua_field_number(L, 2, fn, "excess_reference", 0.0);
+        PL_LUA_CHECK(L, isfinite(o->excess_reference), fn, "excess_reference",
+                     "a finite head in m", o->excess_reference);
+        o->has_excess_reference = 1;
+    }
+    o->record_from = pl_lua_field_number(L, 2, fn, "record_from", o->record_from);
+    PL_LUA_CHECK(L, o->record_from >= 0, fn, "record_from", ">= 0 s", o->record_from);
+}
+
+/* hide = {"ghost", ...}: materials whose bodies are not drawn. */
+static void read_hide(lua_State *L, render_target *t)
+{
+    if (lua_getfield(L, 2, "hide") == LUA_TNIL) {
+        lua_pop(L, 1);
+        return;
+    }
+    if (!lua_istable(L, -1)) luaL_error(L, "render: hide must be a list of material names");
+    int n = (int)luaL_len(L, -1);
+    for (int i = 1; i <= n; i++) {
+        if (lua_geti(L, -1, i) != LUA_TSTRING)
+            luaL_error(L, "render: hide[%d] must be a material name", i);
+        int m = pl_world_find_material(t->w, lua_tostring(L, -1));
+        if (m < 0) luaL_error(L, "render: hide: unknown material '%s'", lua_tostring(L, -1));
+        if (m >= 32) luaL_error(L, "render: hide: only the first 32 materials can be hidden "
+                                   "('%s' is material %d)", lua_tostring(L, -1), m + 1);
+        t->opt->hidden_materials |= 1u << m;
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
 }
 
 static int read_render(lua_State *L)
@@ -228,6 +258,7 @@ static int read_render(lua_State *L)
     field_color(L, "wall_color", &o->wall_color);
     field_color(L, "force_color", &o->force_color);
     read_colors(L, t);
+    read_hide(L, t);
     o->force_scale = pl_lua_field_number(L, 2, fn, "force_scale", o->force_scale);
     PL_LUA_CHECK(L, o->force_scale >= 0, fn, "force_scale", ">= 0 N (0 = largest force)",
                  o->force_scale);

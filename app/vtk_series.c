@@ -32,11 +32,12 @@ pl_vtk_series *pl_vtk_series_open(const char *dir, char *err, size_t errlen) {
     return s;
 }
 
-/* Writes DIR/NAME.pvd listing vtk/frame_K_NAME.vtu for every frame so far (under a temporary
-   name, renamed into place when whole: render/atomic_file.h). */
-static int write_pvd(const pl_vtk_series *s, const char *name, char *err, size_t errlen) {
+/* Writes DIR/run.pvd: one collection for the whole run, each frame's bodies (part 0),
+ * contacts (part 1) and fluid (part 2, when there is a fluid mesh) at its time (under a
+ * temporary name, renamed into place when whole: render/atomic_file.h). */
+static int write_pvd(const pl_vtk_series *s, char *err, size_t errlen) {
     char path[PATH_MAX + 32];
-    snprintf(path, sizeof path, "%s/%s.pvd", s->dir, name);
+    snprintf(path, sizeof path, "%s/run.pvd", s->dir);
     pl_atomic_file a;
     if (pl_atomic_file_begin(&a, path, err, errlen)) return -1;
     FILE *f = fopen(a.tmp_path, "w");
@@ -44,9 +45,12 @@ static int write_pvd(const pl_vtk_series *s, const char *name, char *err, size_t
         snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
         return -1;
     }
+    static const char *const parts[] = {"bodies", "contacts", "fluid"};
     fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
     for (int k = 0; k < s->n; k++)
-        fprintf(f, "<DataSet timestep=\"%.9g\" file=\"vtk/frame_%06d_%s.vtu\"/>\n", s->times[k], k, name);
+        for (int p = 0; p < (s->fluid ? 3 : 2); p++)
+            fprintf(f, "<DataSet timestep=\"%.9g\" part=\"%d\" name=\"%s\" file=\"vtk/frame_%06d_%s.vtu\"/>\n",
+                    s->times[k], p, parts[p], k, parts[p]);
     fprintf(f, "</Collection>\n</VTKFile>\n");
     errno = 0;
     int ok = !ferror(f);
@@ -89,8 +93,7 @@ int pl_vtk_series_add(pl_vtk_series *s, pl_world *w, char *err, size_t errlen) {
         s->cap = cap;
     }
     s->times[s->n++] = pl_world_time(w);
-    if (write_pvd(s, "bodies", err, errlen) || write_pvd(s, "contacts", err, errlen)) return -1;
-    if (s->fluid && write_pvd(s, "fluid", err, errlen)) return -1;
+    if (write_pvd(s, err, errlen)) return -1;
     return 0;
 }
 

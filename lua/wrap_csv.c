@@ -1,5 +1,6 @@
-/* porelab.csv(path, columns): a CSV writer for time series, writing inside the output
- * folder. csv:row(v1, v2, ...) or csv:row{v1, v2, ...}; csv:close().
+/* porelab.csv(path, columns [, units]): a CSV writer for time series, writing inside the
+ * output folder. The file starts with a metadata comment ("# porelab VERSION, scene PATH,
+ * state hash HASH at t = T s, written DATE") and the header ("t (s),fn (N)" with units). csv:row(v1, v2, ...) or csv:row{v1, v2, ...}; csv:close().
  *
  * Survives faults: rows are kept in memory as whole lines and written with write(2) only as
  * whole lines - when 64 KiB have gathered or a second has passed since the last write, when
@@ -13,6 +14,9 @@
 #include "wrap.h"
 #include "lua_util.h"
 #include "sandbox.h"
+#include "context.h"
+#include "scene_internal.h"
+#include "porelab/core.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -185,6 +189,30 @@ static void raise_failure(lua_State *L, const char *fn, csv_ud *c)
     pl_lua_error(L, "%s: %s", fn, msg);
 }
 
+/* "# porelab 0.1.0, scene <path>, state hash <16 hex> at t = <s> s, written <UTC date>\n";
+ * the date is SOURCE_DATE_EPOCH when set (reproducible files). */
+static void csv_metadata(lua_State *L, char *out, size_t n)
+{
+    pl_lua_context *ctx = pl_lua_get_context(L);
+    const char *scene = ctx && ctx->scene_path[0] ? ctx->scene_path : "(none)";
+    char hash[64] = "";
+    pl_lua_scene_push_last_world(L);
+    pl_lua_world *lw = lua_isnil(L, -1) ? NULL : luaL_testudata(L, -1, PL_LUA_WORLD_MT);
+    if (lw && lw->w)
+        snprintf(hash, sizeof hash, ", state hash %016llx at t = %.6g s",
+                 (unsigned long long)pl_world_state_hash(lw->w), pl_world_time(lw->w));
+    lua_pop(L, 1);
+    time_t now = time(NULL);
+    const char *sde = getenv("SOURCE_DATE_EPOCH");
+    if (sde && *sde) now = (time_t)strtoll(sde, NULL, 10);
+    struct tm tm;
+    char date[32] = "";
+    if (gmtime_r(&now, &tm)) strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    snprintf(out, n, "# porelab %s, scene %s%s, written %s\n", PL_VERSION_STRING, scene, hash, date);
+    for (char *p = out + 2; *p && p[1]; p++)
+        if (*p == '\n' || *p == '\r') *p = ' ';
+}
+
 /* ---- the Lua functions ---- */
 
 int pl_lua_csv_new(lua_State *L)
@@ -194,6 +222,21 @@ int pl_lua_csv_new(lua_State *L)
     luaL_checktype(L, 2, LUA_TTABLE);
     int n = (int)luaL_len(L, 2);
     if (n < 1) pl_lua_error(L, "%s: columns must be a non-empty list of names", fn);
+    if (!lua_isnoneornil(L, 3)) {
+        if (!lua_istable(L, 3) || (int)luaL_len(L, 3) != n)
+            pl_lua_error(L, "%s: units must be a list of %d strings (one per column, \"\" for "
+                            "none), e.g. {\"s\", \"m\"}", fn, n);
+        for (int i = 1; i <= n; i++) {
+            if (lua_geti(L, 3, i) != LUA_TSTRING)
+                pl_lua_error(L, "%s: unit %d must be a string (got %s)", fn, i, luaL_typename(L, -1));
+            size_t len;
+            const char *u = lua_tolstring(L, -1, &len);
+            if (len > 32 || strpbrk(u, ",\"\n\r"))
+                pl_lua_error(L, "%s: unit %d '%s' must be at most 32 characters without commas, "
+                                "quotes or line breaks", fn, i, u);
+            lua_pop(L, 1);
+        }
+    }
     size_t need = 1;
     for (int i = 1; i <= n; i++) {
         if (lua_geti(L, 2, i) != LUA_TSTRING)
@@ -221,10 +264,22 @@ int pl_lua_csv_new(lua_State *L)
     }
     c->columns = n;
     c->last_flush = monotonic_seconds();
+    /* a metadata comment, then the header: "name (unit)" when the scene gives units */
+    char meta[PATH_MAX + 256];
+    csv_metadata(L, meta, sizeof meta);
+    put(c, meta, strlen(meta));
+    int has_units = lua_istable(L, 3);
     for (int i = 1; i <= n; i++) {
         lua_geti(L, 2, i);
         if (i > 1) put(c, ",", 1);
-        put_field(c, L, -1);
+        if (has_units && lua_geti(L, 3, i) == LUA_TSTRING && lua_rawlen(L, -1) > 0) {
+            lua_pushfstring(L, "%s (%s)", lua_tostring(L, -2), lua_tostring(L, -1));
+            put_field(c, L, -1);
+            lua_pop(L, 2);
+        } else {
+            if (has_units) lua_pop(L, 1);
+            put_field(c, L, -1);
+        }
         lua_pop(L, 1);
     }
     put(c, "\n", 1);

@@ -35,7 +35,7 @@ packing.rain(w, {
   seed = 7,
 })
 
-local energy = porelab.csv("energy.csv", { "t", "kinetic", "contacts" })
+local energy = porelab.csv("energy.csv", { "t", "kinetic", "contacts" }, { "s", "J", "" })
 local fps = 30
 
 return {

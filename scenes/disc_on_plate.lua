@@ -26,7 +26,7 @@ local rock = w:material { name = "rock", density = 2400, kn = 1e7, ks = 0, frict
 w:wall { from = { -2, 0 }, to = { 2, 0 }, material = rock }
 w:disc { center = { 0, 1 }, radius = 1, material = rock }
 
-local log = porelab.csv("contact_force.csv", { "t", "fn" })
+local log = porelab.csv("contact_force.csv", { "t", "fn" }, { "s", "N" })
 local weight = 2400 * math.pi * 10
 
 return {

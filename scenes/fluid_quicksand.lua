@@ -30,7 +30,7 @@ w:set_flag("FLUID_STORAGE", 0)         -- quasi-static seepage
 w:set_flag("FLUID_SOLVE_TIMESTEPS", 10)
 w:set_flag("FLUID_DENSITY", 1000)
 
-local log = porelab.csv("gradient.csv", { "t", "excess_head", "gradient" })
+local log = porelab.csv("gradient.csv", { "t", "excess_head", "gradient" }, { "s", "m", "" })
 local rate = 0.04                       -- m of excess head per second after t = 0.5 s
 local last = 0
 

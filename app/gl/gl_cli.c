@@ -68,6 +68,8 @@ struct pl_gl_frames {
     int fps, count;
     pl_draw_list dl;
     pl_osmesa *o;
+    pl_render_ranges ranges; /* fixed colour ranges and arrow scale across the run */
+    int started;             /* stale frames of an earlier run removed */
 };
 
 static int make_dirs(const char *path, char *err, size_t errlen)
@@ -123,7 +125,15 @@ pl_gl_frames *pl_gl_frames_open(const char *dir, const char *video, int fps, cha
 int pl_gl_frames_add(pl_gl_frames *fw, const pl_world *w, const pl_render_options *opt,
                      char *err, size_t errlen)
 {
-    if (pl_render_build(w, opt, &fw->dl, err, errlen) != 0) return -1;
+    if (!fw->started) { /* a rerun into the same folder leaves no frames of the old run */
+        pl_frames_remove_stale(fw->dir, fw->count, stderr);
+        fw->started = 1;
+    }
+    if (opt->record_from > 0.0 && pl_world_time(w) < opt->record_from - 1e-9) return 0;
+    pl_render_options fixed;
+    pl_render_ranges_apply(&fw->ranges, opt, &fixed);
+    if (pl_render_build(w, &fixed, &fw->dl, err, errlen) != 0) return -1;
+    pl_render_ranges_update(&fw->ranges, &fw->dl);
     char path[4200];
     snprintf(path, sizeof path, "%s/frame_%06d.png", fw->dir, fw->count);
     /* level 1: frames are many and temporary; stills use 6 */
@@ -179,6 +189,7 @@ int pl_gl_frames_close(pl_gl_frames **fwp, char *err, size_t errlen)
     pl_gl_frames *fw = *fwp;
     int rc = 0;
     if (fw->video[0] && fw->count > 0) rc = encode(fw, err, errlen);
+    pl_render_ranges_note(&fw->ranges, stderr);
     pl_draw_list_free(&fw->dl);
     free(fw);
     *fwp = NULL;

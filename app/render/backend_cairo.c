@@ -259,11 +259,47 @@ static void draw_text(cairo_t *cr, const pl_draw_list *dl, const pl_prim *p) {
         cairo_rectangle(cr, x - pad, y - cap - pad, te.x_advance + 2.0 * pad, cap + 2.0 * pad);
         cairo_fill(cr);
     }
-    cairo_move_to(cr, x, y);
-    cairo_text_path(cr, s);
-    set_color(cr, p->fill);
-    cairo_fill(cr);
+    cairo_surface_type_t type = cairo_surface_get_type(cairo_get_target(cr));
+    if (type == CAIRO_SURFACE_TYPE_SVG) {
+        /* cairo's SVG surface would write glyph outlines: the text goes in as <text>
+         * elements after the drawing (pl_svg_append_text), the box stays here */
+    } else if (type == CAIRO_SURFACE_TYPE_PDF) {
+        /* real text: cairo embeds a subset of the font with a Unicode map (searchable,
+         * selectable, editable) */
+        cairo_move_to(cr, x, y);
+        set_color(cr, p->fill);
+        cairo_show_text(cr, s);
+    } else {
+        cairo_move_to(cr, x, y);
+        cairo_text_path(cr, s);
+        set_color(cr, p->fill);
+        cairo_fill(cr);
+    }
     cairo_restore(cr);
+}
+
+/* The offset of a text primitive's baseline start from its anchor point (px, before the
+ * rotation), as draw_text places it. */
+void pl_cairo_text_origin(cairo_t *cr, const pl_prim *p, const char *s, double *ox, double *oy) {
+    cairo_set_font_size(cr, p->size);
+    cairo_text_extents_t te;
+    cairo_font_extents_t fe;
+    cairo_text_extents(cr, s, &te);
+    cairo_font_extents(cr, &fe);
+    double x = 0.0, y = 0.0, cap = 0.729 * p->size;
+    switch (PL_ANCHOR_H(p->anchor)) {
+    case PL_ANCHOR_CENTER: x = -0.5 * te.x_advance; break;
+    case PL_ANCHOR_RIGHT: x = -te.x_advance; break;
+    default: break;
+    }
+    switch (PL_ANCHOR_V(p->anchor)) {
+    case PL_ANCHOR_TOP: y = cap; break;
+    case PL_ANCHOR_MIDDLE: y = 0.5 * cap; break;
+    case PL_ANCHOR_BOTTOM: y = -fe.descent; break;
+    default: break;
+    }
+    *ox = x;
+    *oy = y;
 }
 
 /* ------------------------------------------------------ direct rasterization */
@@ -703,5 +739,6 @@ int pl_cairo_write_file(const pl_draw_list *dl, const char *path, int png_level,
         rc = -1;
     }
     cairo_surface_destroy(s);
+    if (rc == 0 && fmt == 1) rc = pl_svg_append_text(dl, path, err, errlen);
     return rc;
 }

@@ -51,6 +51,14 @@ int pl_png_write(const char *path, const pl_image *img, int level, int filter, c
 /// Reads any 8/16-bit PNG (grey, palette, RGB, with or without alpha) into RGBA 8-bit.
 int pl_png_read(const char *path, pl_image *img, char *err, size_t errlen);
 
+/// SVG text: cairo's SVG surface writes text as glyph outlines, so porelab's SVG stills get
+/// their text as <text> elements (DejaVu Sans, same size, position and rotation) inserted
+/// into the finished file before </svg>, above the drawing. Returns 0 or -1 with a message.
+int pl_svg_append_text(const pl_draw_list *dl, const char *path, char *err, size_t errlen);
+
+/// Baseline start of a text primitive relative to its anchor (px, before rotation).
+void pl_cairo_text_origin(cairo_t *cr, const pl_prim *p, const char *s, double *ox, double *oy);
+
 /// Format of a file name: 0 png, 1 svg, 2 pdf, -1 unknown (case-insensitive extension).
 int pl_file_format(const char *path);
 

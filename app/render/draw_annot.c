@@ -100,8 +100,11 @@ void pl_draw_colorbar(pl_draw_list *dl, pl_px_rect r, pl_colormap map, double vm
         pl_dl_line(dl, PL_SPACE_PIXEL, (pl_vec2){r.x1, y}, (pl_vec2){r.x1 + tick_len, y}, ink, 1.0f);
         char buf[48];
         double v = all[i];
-        if (fabs(v) < 1e-12 * (fabs(vmax) + fabs(vmin))) v = 0.0;
+        /* ticks are multiples of the step: a tick within a millionth of a step of zero is
+         * zero, and a printed "-0", "-0.0" loses its sign */
+        if (step > 0.0 && fabs(v) < 1e-6 * step) v = 0.0;
         snprintf(buf, sizeof buf, "%.*f", dec, v);
+        if (buf[0] == '-' && strspn(buf + 1, "0.") == strlen(buf + 1)) memmove(buf, buf + 1, strlen(buf));
         pl_dl_text(dl, PL_SPACE_PIXEL, (pl_vec2){r.x1 + tick_len + 0.3 * fs, y}, buf, 0.85f * fs,
                    PL_ANCHOR_LEFT | PL_ANCHOR_MIDDLE, 0.0f, ink, NULL);
     }

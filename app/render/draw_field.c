@@ -1,5 +1,6 @@
 /* Field layers: filled P1 fields, mesh wireframe, labelled isolines, arrows. */
 #include "draw_field.h"
+#include "label_place.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -94,20 +95,67 @@ pl_isoline_style pl_default_isoline_style(void) {
     return s;
 }
 
+/* Label box half sizes for a string (DejaVu Sans: about 0.56 em per character). */
+static void label_half_size(const char *txt, float size, double *hw, double *hh) {
+    size_t n = strlen(txt);
+    *hw = 0.5 * 0.58 * size * (double)n + 0.18 * size;
+    *hh = 0.5 * 0.729 * size + 0.18 * size;
+}
+
 void pl_draw_isolines(pl_draw_list *dl, const pl_isolines *iso, const pl_isoline_style *st) {
+    const pl_camera *cam = &dl->camera;
+    pl_obstacles *avoid = st->avoid;
     for (int l = 0; l < iso->line_count; l++) {
         int a = iso->starts[l], b = iso->starts[l + 1], n = b - a;
         if (n < 2) continue;
         const pl_vec2 *pts = iso->points + a;
-        if (iso->closed[l]) {
-            pl_style s = pl_style_stroke(st->color, st->width);
-            pl_dl_polygon(dl, PL_SPACE_WORLD, pts, n, &s);
-        } else {
-            pl_dl_polyline(dl, PL_SPACE_WORLD, pts, n, st->color, st->width);
+        if (!avoid) {
+            if (iso->closed[l]) {
+                pl_style s = pl_style_stroke(st->color, st->width);
+                pl_dl_polygon(dl, PL_SPACE_WORLD, pts, n, &s);
+            } else {
+                pl_dl_polyline(dl, PL_SPACE_WORLD, pts, n, st->color, st->width);
+            }
+            continue;
+        }
+        /* split the line where it runs inside a body or wall: those pieces are not drawn */
+        int segs = iso->closed[l] ? n : n - 1, run = -1;
+        for (int i = 0; i <= segs; i++) {
+            int inside = 1;
+            if (i < segs) {
+                pl_vec2 p = pl_camera_to_px(cam, pts[i]), q = pl_camera_to_px(cam, pts[(i + 1) % n]);
+                inside = pl_obstacles_contain(avoid, (pl_vec2){0.5 * (p.x + q.x), 0.5 * (p.y + q.y)});
+            }
+            if (!inside && run < 0) run = i;
+            if (inside && run >= 0) {
+                int m = i - run + 1;
+                if (run + m <= n) {
+                    pl_dl_polyline(dl, PL_SPACE_WORLD, pts + run, m, st->color, st->width);
+                } else { /* a closed loop's last piece wraps to the first point */
+                    pl_dl_polyline(dl, PL_SPACE_WORLD, pts + run, n - run, st->color, st->width);
+                    pl_vec2 w2[2] = {pts[n - 1], pts[0]};
+                    pl_dl_polyline(dl, PL_SPACE_WORLD, w2, 2, st->color, st->width);
+                }
+                run = -1;
+            }
         }
     }
     if (!(st->label_size > 0.0f)) return;
-    const pl_camera *cam = &dl->camera;
+    if (avoid) { /* every line, sampled every 3 px, keeps other lines' labels off it */
+        for (int l = 0; l < iso->line_count; l++) {
+            int a = iso->starts[l], b = iso->starts[l + 1], n = b - a;
+            int segs = iso->closed[l] ? n : n - 1;
+            for (int i = 0; i < segs; i++) {
+                pl_vec2 p = pl_camera_to_px(cam, iso->points[a + i]);
+                pl_vec2 q = pl_camera_to_px(cam, iso->points[a + (i + 1) % n]);
+                int k = (int)(hypot(q.x - p.x, q.y - p.y) / 3.0) + 1;
+                for (int j = 0; j < k; j++) {
+                    double t = (double)j / k;
+                    pl_obstacles_add_point(avoid, (pl_vec2){p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)}, l);
+                }
+            }
+        }
+    }
     for (int l = 0; l < iso->line_count; l++) {
         int a = iso->starts[l], b = iso->starts[l + 1], n = b - a;
         if (n < 2) continue;
@@ -123,30 +171,51 @@ void pl_draw_isolines(pl_draw_list *dl, const pl_isolines *iso, const pl_isoline
         int nlab = (int)(total / spacing);
         if (nlab < 1) nlab = 1;
         char txt[64];
-        snprintf(txt, sizeof txt, st->label_format ? st->label_format : "%g", iso->levels[l]);
+        double level = iso->levels[l];
+        if (fabs(level) < 1e-12) level = 0.0; /* never "-0" */
+        snprintf(txt, sizeof txt, st->label_format ? st->label_format : "%g", level);
+        double hw, hh;
+        label_half_size(txt, st->label_size, &hw, &hh);
         /* stagger neighbouring lines (golden-ratio offsets) so labels do not form a column */
         double shift = fmod(0.618033988749895 * l, 1.0) - 0.5;
         for (int k = 0; k < nlab; k++) {
             double f0 = (k + 0.5 + 0.6 * shift) / nlab;
             if (f0 < 0.1) f0 = 0.1;
             if (f0 > 0.9) f0 = 0.9;
-            double target = total * f0, s = 0.0;
-            for (int i = 0; i < segs; i++) {
-                pl_vec2 p = pl_camera_to_px(cam, pts[i]), q = pl_camera_to_px(cam, pts[(i + 1) % n]);
-                double len = hypot(q.x - p.x, q.y - p.y);
-                if (s + len >= target && len > 0.0) {
-                    double f = (target - s) / len;
-                    pl_vec2 at = {p.x + f * (q.x - p.x), p.y + f * (q.y - p.y)};
-                    /* screen angle, counter-clockwise, kept upright */
-                    double ang = atan2(-(q.y - p.y), q.x - p.x);
-                    if (ang > 1.5707963267948966) ang -= 3.141592653589793;
-                    if (ang < -1.5707963267948966) ang += 3.141592653589793;
-                    pl_dl_text(dl, PL_SPACE_PIXEL, at, txt, st->label_size,
-                               PL_ANCHOR_CENTER | PL_ANCHOR_MIDDLE, (float)ang, st->color,
-                               &st->halo);
-                    break;
+            /* candidates: the preferred place, then alternately either side of it */
+            int tries = avoid ? 25 : 1;
+            for (int c = 0; c < tries; c++) {
+                double f = f0 + (c % 2 ? 1 : -1) * ((c + 1) / 2) * (0.4 / nlab) / 12.0;
+                if (f < 0.03 || f > 0.97) continue;
+                double target = total * f, s = 0.0;
+                int placed = 0, done = 0;
+                for (int i = 0; i < segs && !done; i++) {
+                    pl_vec2 p = pl_camera_to_px(cam, pts[i]), q = pl_camera_to_px(cam, pts[(i + 1) % n]);
+                    double len = hypot(q.x - p.x, q.y - p.y);
+                    if (s + len >= target && len > 0.0) {
+                        double g = (target - s) / len;
+                        pl_vec2 at = {p.x + g * (q.x - p.x), p.y + g * (q.y - p.y)};
+                        /* screen angle, counter-clockwise, kept upright */
+                        double ang = atan2(-(q.y - p.y), q.x - p.x);
+                        if (ang > 1.5707963267948966) ang -= 3.141592653589793;
+                        if (ang < -1.5707963267948966) ang += 3.141592653589793;
+                        pl_label_box box = {at, hw, hh, ang};
+                        done = 1;
+                        if (avoid) {
+                            int inside_clip = !dl->has_clip ||
+                                (at.x - hw > dl->clip.x0 && at.x + hw < dl->clip.x1 &&
+                                 at.y - hw > dl->clip.y0 && at.y + hw < dl->clip.y1);
+                            if (!inside_clip || pl_obstacles_hit(avoid, box, 2.0, l)) break;
+                            pl_obstacles_add_box(avoid, box);
+                        }
+                        pl_dl_text(dl, PL_SPACE_PIXEL, at, txt, st->label_size,
+                                   PL_ANCHOR_CENTER | PL_ANCHOR_MIDDLE, (float)ang, st->color,
+                                   &st->halo);
+                        placed = 1;
+                    }
+                    s += len;
                 }
-                s += len;
+                if (placed) break;
             }
         }
     }

@@ -32,6 +32,9 @@ typedef struct pl_isoline_style {
     const char *label_format; ///< printf format for the level value; default "%g"
     double label_spacing; ///< px of line between labels; default 280
     pl_rgba halo;         ///< label background outline; default white
+    struct pl_obstacles *avoid; ///< NULL, or obstacles (label_place.h): lines are not drawn
+                          ///< inside its outlines and labels go only where they touch no
+                          ///< obstacle, placed label or other line (placed labels are added)
 } pl_isoline_style;
 
 pl_isoline_style pl_default_isoline_style(void);

@@ -1,6 +1,7 @@
 /* Fluid layers: the Darcy mesh of porelab/fluid.h drawn with the generic field builders. */
 #include "draw_field.h"
 #include "draw_world.h"
+#include "label_place.h"
 #include "porelab/fluid.h"
 
 #include <math.h>
@@ -98,6 +99,50 @@ int pl_render_scene_capture_fluid(pl_render_scene *s, const pl_world *w, int fie
     return 0;
 }
 
+/* Below these magnitudes a node value is round-off, drawn as zero (Pa fields and m fields),
+ * and an automatic range never spans less than the floors (a field of 1e-11 Pa is not drawn
+ * as full scale). */
+#define PL_FLUID_NOISE_PA 1e-2
+#define PL_FLUID_NOISE_M 1e-6
+#define PL_FLUID_FLOOR_PA 1.0
+#define PL_FLUID_FLOOR_M 1e-4
+
+static int field_is_pa(int field) {
+    return field == PL_FLUID_PRESSURE || field == PL_FLUID_EXCESS_PRESSURE;
+}
+
+void pl_render_scene_denoise_fluid(pl_render_scene *s) {
+    double noise = field_is_pa(s->fluid_field) ? PL_FLUID_NOISE_PA : PL_FLUID_NOISE_M;
+    for (int i = 0; i < s->fluid_node_count; i++)
+        if (fabs(s->fluid_values[i]) < noise) s->fluid_values[i] = 0.0;
+}
+
+int pl_render_scene_capture_fluid_opt(pl_render_scene *s, const pl_world *w,
+                                      const pl_render_options *opt) {
+    int rc = pl_render_scene_capture_fluid(s, w, opt->fluid_field);
+    if (rc || !opt->has_excess_reference || opt->fluid_field != PL_FLUID_EXCESS_PRESSURE) return rc;
+    /* excess pressure from the hydrostatic state of head h0: rho_f g (h - h0), with rho_f g
+     * from the pressure and the pressure head of the same nodes */
+    int nn = s->fluid_node_count;
+    if (nn <= 0) return 0;
+    double *h = malloc((size_t)nn * 3u * sizeof *h);
+    if (!h) return -1;
+    double *p = h + nn, *ph = h + 2 * nn;
+    if (pl_world_fluid_copy_node_field(w, PL_FLUID_HEAD, h, nn) == nn &&
+        pl_world_fluid_copy_node_field(w, PL_FLUID_PRESSURE, p, nn) == nn &&
+        pl_world_fluid_copy_node_field(w, PL_FLUID_PRESSURE_HEAD, ph, nn) == nn) {
+        int best = -1;
+        for (int i = 0; i < nn; i++)
+            if (isfinite(ph[i]) && (best < 0 || fabs(ph[i]) > fabs(ph[best]))) best = i;
+        if (best >= 0 && fabs(ph[best]) > 0.0) {
+            double rg = p[best] / ph[best];
+            for (int i = 0; i < nn; i++) s->fluid_values[i] = rg * (h[i] - opt->excess_reference);
+        }
+    }
+    free(h);
+    return 0;
+}
+
 int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt, double *vmin,
                          double *vmax, pl_colormap *map, char *label, size_t labellen,
                          double *unit_factor) {
@@ -111,24 +156,46 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
     }
     if (!isfinite(lo)) lo = hi = 0.0;
     int field = s->fluid_field;
-    int is_pa = field == PL_FLUID_PRESSURE || field == PL_FLUID_EXCESS_PRESSURE;
+    int is_pa = field_is_pa(field);
     *map = PL_CMAP_SEQUENTIAL;
-    /* signed fields get the diverging map centred on zero: excess pressure always, pressure
-     * when suction is a real part of the field (not just round-off at a free surface) */
-    if (field == PL_FLUID_EXCESS_PRESSURE || (is_pa && lo < 0.0 && -lo > 0.1 * fabs(hi))) {
-        double m = fmax(fabs(lo), fabs(hi));
-        lo = -m;
-        hi = m;
-        *map = PL_CMAP_DIVERGING;
-    }
     if (opt->fluid_max > opt->fluid_min) {
         lo = opt->fluid_min;
         hi = opt->fluid_max;
-    }
-    if (!(hi > lo)) { /* uniform field: a small symmetric window keeps a valid bar */
-        double d = fabs(lo) > 0.0 ? 0.01 * fabs(lo) : 1.0;
-        lo -= d;
-        hi += d;
+        /* a fixed range that crosses zero is a signed field: diverging, symmetric */
+        if (lo < 0.0 && hi > 0.0) {
+            double m = fmax(-lo, hi);
+            lo = -m;
+            hi = m;
+            *map = PL_CMAP_DIVERGING;
+        }
+    } else {
+        /* automatic: the house style's rules (docs/rendering.md). A field of one sign gets the
+         * sequential map from zero; a signed field (a real negative part, not round-off) the
+         * diverging map, symmetric about zero; never narrower than the floor. */
+        double floor_v = is_pa ? PL_FLUID_FLOOR_PA : PL_FLUID_FLOOR_M;
+        int signed_field = lo < 0.0 && hi > 0.0 && -lo > 0.02 * hi && hi > 0.02 * -lo;
+        int zero_based = is_pa || field == PL_FLUID_PRESSURE_HEAD;
+        if (signed_field && zero_based) {
+            double m = fmax(fmax(-lo, hi), floor_v);
+            lo = -m;
+            hi = m;
+            *map = PL_CMAP_DIVERGING;
+        } else if (zero_based && lo >= -0.02 * fabs(hi) && hi > 0.0) {
+            lo = 0.0;
+            if (hi < floor_v) hi = floor_v;
+        } else if (zero_based && hi <= 0.02 * fabs(lo) && lo < 0.0) {
+            hi = 0.0;
+            if (lo > -floor_v) lo = -floor_v;
+        } else if (hi - lo < floor_v) { /* uniform: a window of the floor around it */
+            double c = 0.5 * (lo + hi);
+            if (zero_based && c == 0.0) {
+                lo = 0.0;
+                hi = floor_v;
+            } else {
+                lo = c - 0.5 * floor_v;
+                hi = c + 0.5 * floor_v;
+            }
+        }
     }
     *vmin = lo;
     *vmax = hi;
@@ -146,6 +213,50 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
     }
     snprintf(label, labellen, "%s (%s)", name, unit);
     return 1;
+}
+
+/* What isoline labels keep clear of: walls, fixed and prescribed bodies, every body that is
+ * not a disc (pistons, buildings, blocks), discs much larger than the grains (pipes), and the
+ * scene's overlay text. */
+void pl_fluid_label_obstacles(pl_obstacles *o, const pl_draw_list *dl, const pl_render_scene *s,
+                              const pl_render_options *opt) {
+    const pl_camera *cam = &dl->camera;
+    double rsum = 0.0;
+    int nd = 0;
+    for (int i = 0; i < s->body_count; i++)
+        if (s->bodies[i].shape == PL_SHAPE_DISC && s->bodies[i].motion == PL_MOTION_DYNAMIC) {
+            rsum += s->bodies[i].radius;
+            nd++;
+        }
+    double rgrain = nd ? rsum / nd : 0.0;
+    pl_vec2 px[64];
+    for (int i = 0; i < s->body_count && (opt->layers & PL_LAYER_BODIES); i++) {
+        const pl_body_info *b = &s->bodies[i];
+        if (b->material >= 0 && b->material < 32 && (opt->hidden_materials >> b->material) & 1u)
+            continue;
+        if (b->shape == PL_SHAPE_DISC) {
+            if (b->motion == PL_MOTION_DYNAMIC && b->radius <= 3.0 * rgrain) continue;
+            pl_obstacles_add_circle(o, pl_camera_to_px(cam, b->position), b->radius * cam->scale + 1.0);
+            continue;
+        }
+        int nv = s->vert_first[i + 1] - s->vert_first[i];
+        if (nv < 2 || nv > 64) continue;
+        for (int k = 0; k < nv; k++) px[k] = pl_camera_to_px(cam, s->verts[s->vert_first[i] + k]);
+        pl_obstacles_add_polygon(o, px, nv);
+    }
+    const pl_draw_list *ov = (opt->layers & PL_LAYER_OVERLAY) ? opt->overlay : NULL;
+    for (int k = 0; ov && k < ov->prim_count; k++) {
+        const pl_prim *p = &ov->prims[k];
+        if (p->kind != PL_PRIM_TEXT) continue;
+        pl_vec2 at = p->space == PL_SPACE_WORLD ? pl_camera_to_px(cam, ov->points[p->first])
+                                                : ov->points[p->first];
+        double w = 0.58 * p->size * (double)strlen(ov->text + p->text), h = 0.9 * p->size;
+        double cx = PL_ANCHOR_H(p->anchor) == PL_ANCHOR_CENTER ? at.x
+                    : PL_ANCHOR_H(p->anchor) == PL_ANCHOR_RIGHT ? at.x - 0.5 * w : at.x + 0.5 * w;
+        double cy = PL_ANCHOR_V(p->anchor) == PL_ANCHOR_TOP ? at.y + 0.5 * h
+                    : PL_ANCHOR_V(p->anchor) == PL_ANCHOR_MIDDLE ? at.y : at.y - 0.5 * h;
+        pl_obstacles_add_box(o, (pl_label_box){{cx, cy}, 0.5 * w + 2.0, 0.5 * h + 2.0, 0.0});
+    }
 }
 
 double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render_options *opt,
@@ -191,7 +302,13 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
             else
                 snprintf(fmt, sizeof fmt, "%%g");
             st.label_format = fmt;
+            pl_obstacles avoid;
+            pl_obstacles_init(&avoid);
+            pl_fluid_label_obstacles(&avoid, dl, s, opt);
+            st.avoid = &avoid;
             pl_draw_isolines(dl, &iso, &st);
+            if (avoid.failed) dl->failed = 1;
+            pl_obstacles_free(&avoid);
         } else {
             dl->failed = 1;
         }
@@ -249,8 +366,8 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
                 n++;
             }
             /* automatic scale: the fastest cell arrow spans 0.9 cells */
-            if (!(opt->velocity_scale > 0.0) && vcell > 0.0)
-                vscale = 0.9 * cell / dl->camera.scale / vcell;
+            if (vcell > 0.0) dl->auto_vscale = 0.9 * cell / dl->camera.scale / vcell;
+            if (!(opt->velocity_scale > 0.0) && vcell > 0.0) vscale = dl->auto_vscale;
             pl_draw_arrows(dl, at, vv, n, vscale, pl_rgb(0.05, 0.12, 0.30), 1.2f, 2.5);
             free(acc);
             free(at);

@@ -183,6 +183,18 @@ static double ray_to_boundary(pl_vec2 c, pl_vec2 d, const pl_vec2 *v, int n) {
     return isfinite(best) ? best : 0.0;
 }
 
+static int nv_hidden_fill(pl_draw_list *dl, const pl_render_scene *s, int i, pl_rgba bg) {
+    const pl_body_info *b = &s->bodies[i];
+    pl_style st = pl_style_fill(bg);
+    if (b->shape == PL_SHAPE_DISC) {
+        pl_dl_circle(dl, PL_SPACE_WORLD, b->position, b->radius, &st);
+        return 0;
+    }
+    int nv = s->vert_first[i + 1] - s->vert_first[i];
+    if (nv >= 3) pl_dl_polygon(dl, PL_SPACE_WORLD, s->verts + s->vert_first[i], nv, &st);
+    return 0;
+}
+
 void pl_draw_bodies(pl_draw_list *dl, const pl_render_scene *s, const pl_render_options *opt,
                     const double *values, pl_colormap map, double vmin, double vmax) {
     const double scale = dl->camera.scale;
@@ -194,6 +206,12 @@ void pl_draw_bodies(pl_draw_list *dl, const pl_render_scene *s, const pl_render_
     for (int pass = 0; pass < 2; pass++) {
         for (int i = 0; i < s->body_count; i++) {
             const pl_body_info *b = &s->bodies[i];
+            if (b->material >= 0 && b->material < 32 && (opt->hidden_materials >> b->material) & 1u) {
+                /* hidden: filled with the background, no outline (it still masks a field
+                 * drawn under it, as the helper it is masks it from the grains) */
+                if (pass == 0 && nv_hidden_fill(dl, s, i, opt->background)) dl->failed = 1;
+                continue;
+            }
             int kinematic = b->motion != PL_MOTION_DYNAMIC;
             const pl_vec2 *v = s->verts + s->vert_first[i];
             int nv = s->vert_first[i + 1] - s->vert_first[i];

@@ -99,6 +99,17 @@ void pl_draw_tangential(pl_draw_list *dl, const pl_render_scene *s, const pl_ren
 int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt, double *vmin,
                          double *vmax, pl_colormap *map, char *label, size_t labellen,
                          double *unit_factor);
+/// Round-off in the fluid field (|value| below 0.01 Pa, or 1e-6 m for heads) set to zero.
+void pl_render_scene_denoise_fluid(pl_render_scene *s);
+/// pl_render_scene_capture_fluid for the options' field, with the options' excess-pressure
+/// reference head applied. Returns 0, or -1 when out of memory.
+int pl_render_scene_capture_fluid_opt(pl_render_scene *s, const pl_world *w,
+                                      const pl_render_options *opt);
+struct pl_obstacles;
+/// The obstacles isoline labels avoid (label_place.h): walls, non-disc and large bodies,
+/// overlay text.
+void pl_fluid_label_obstacles(struct pl_obstacles *o, const pl_draw_list *dl,
+                              const pl_render_scene *s, const pl_render_options *opt);
 /// Draws the selected fluid layers (pressure, mesh, isolines, velocity) of the scene.
 /// Returns the velocity scale used (m per m/s), 0 when no arrows were drawn.
 double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render_options *opt,

@@ -60,6 +60,9 @@ void pl_draw_list_clear(pl_draw_list *dl) {
     dl->failed = 0;
     dl->current_layer = 0;
     dl->has_clip = 0;
+    dl->auto_field_set = dl->auto_color_set = 0;
+    dl->auto_field_lo = dl->auto_field_hi = dl->auto_color_lo = dl->auto_color_hi = 0.0;
+    dl->auto_vscale = 0.0;
 }
 
 void pl_draw_list_free(pl_draw_list *dl) {

@@ -94,6 +94,11 @@ typedef struct pl_draw_list {
     pl_rgba background;
     int failed;       ///< set when an allocation failed; the list is then incomplete
     uint16_t current_layer; ///< tag given to appended primitives
+    /* the frame's automatic ranges (what the frame would have used without fixed ranges;
+     * pl_render_ranges keeps them fixed across a run) */
+    int auto_field_set, auto_color_set; ///< 1 when the frame had that quantity
+    double auto_field_lo, auto_field_hi, auto_color_lo, auto_color_hi; ///< SI units
+    double auto_vscale;     ///< automatic velocity arrow scale, m per (m/s); 0 = no arrows
 } pl_draw_list;
 
 void pl_draw_list_init(pl_draw_list *dl);

@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <dirent.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -45,6 +46,8 @@ struct pl_frame_writer {
     pl_render_scene scene;
     pl_draw_list dl;
     pl_image img;
+    pl_render_ranges ranges; /* fixed colour ranges and arrow scale across the run */
+    int started;      /* stale frames of an earlier run removed */
 };
 
 static int make_dirs(const char *path, char *err, size_t errlen) {
@@ -206,8 +209,38 @@ static int send_all(int fd, const unsigned char *p, size_t n) {
     return 0;
 }
 
-int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_options *opt,
+int pl_frames_remove_stale(const char *dir, int from, FILE *note) {
+    DIR *d = opendir(dir);
+    if (!d) return 0;
+    int removed = 0;
+    struct dirent *e;
+    char path[4200];
+    while ((e = readdir(d)) != NULL) {
+        int idx = -1, len = 0;
+        if (sscanf(e->d_name, "frame_%6d.png%n", &idx, &len) == 1 && len == 16 &&
+            e->d_name[16] == 0 && idx >= from) {
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            if (unlink(path) == 0) removed++;
+        }
+    }
+    closedir(d);
+    if (removed > 0 && note)
+        fprintf(note, "porelab: removed %d frame%s of an earlier run from %s/ (frame_%06d.png "
+                      "and later)\n", removed, removed == 1 ? "" : "s", dir, from);
+    return removed;
+}
+
+int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_options *in_opt,
                         char *err, size_t errlen) {
+    if (!fw->started) { /* a rerun into the same folder leaves no frames of the old run */
+        pl_frames_remove_stale(fw->dir, fw->count, stderr);
+        fw->started = 1;
+    }
+    /* a scene's preparation (before render.record_from) is run but not recorded */
+    if (in_opt->record_from > 0.0 && pl_world_time(w) < in_opt->record_from - 1e-9) return 0;
+    pl_render_options fixed;
+    pl_render_ranges_apply(&fw->ranges, in_opt, &fixed);
+    const pl_render_options *opt = &fixed;
     if (fw->count > 0 && fw->width > 0 && (opt->width != fw->width || opt->height != fw->height)) {
         snprintf(err, errlen, "frame size changed from %dx%d to %dx%d during the run",
                  fw->width, fw->height, opt->width, opt->height);
@@ -218,11 +251,12 @@ int pl_frame_writer_add(pl_frame_writer *fw, const pl_world *w, const pl_render_
     unsigned fluid = PL_LAYER_MESH | PL_LAYER_PRESSURE | PL_LAYER_ISOLINES | PL_LAYER_VELOCITY;
     if (pl_render_scene_capture(&fw->scene, w) ||
         ((opt->layers & fluid) &&
-         pl_render_scene_capture_fluid(&fw->scene, w, opt->fluid_field))) {
+         pl_render_scene_capture_fluid_opt(&fw->scene, w, opt))) {
         snprintf(err, errlen, "out of memory while reading the world");
         return -1;
     }
     if (pl_render_build_scene(&fw->dl, &fw->scene, opt, err, errlen)) return -1;
+    pl_render_ranges_update(&fw->ranges, &fw->dl);
     if (pl_cairo_rasterize(&fw->dl, &fw->img, err, errlen)) return -1;
     char path[4200];
     snprintf(path, sizeof path, "%s/frame_%06d.png", fw->dir, fw->count);
@@ -296,6 +330,7 @@ int pl_frame_writer_close(pl_frame_writer **pfw, char *err, size_t errlen) {
         /* the video is whole under its final name, or not there */
         if (pl_atomic_file_end(&fw->video_file, rc == 0, err, errlen)) rc = -1;
     }
+    pl_render_ranges_note(&fw->ranges, stderr);
     pl_render_scene_free(&fw->scene);
     pl_draw_list_free(&fw->dl);
     pl_image_free(&fw->img);

@@ -45,6 +45,11 @@ pl_render_options pl_default_render_options(void) {
     o.isoline_count = 10;
     o.fluid_min = o.fluid_max = 0.0;
     o.velocity_scale = 0.0;
+    o.has_excess_reference = 0;
+    o.excess_reference = 0.0;
+    o.record_from = 0.0;
+    o.hidden_materials = 0;
+    o.reserve_right = 0;
     return o;
 }
 
@@ -116,6 +121,7 @@ typedef struct quantity {
     double vmin, vmax;     /* in SI units */
     double unit_factor;    /* displayed = SI * factor */
     char label[64];
+    double auto_lo, auto_hi; /* the frame's own range, before a fixed one */
 } quantity;
 
 static void body_quantity(pl_render_scene *s, const pl_render_options *opt, quantity *q) {
@@ -132,6 +138,8 @@ static void body_quantity(pl_render_scene *s, const pl_render_options *opt, quan
                 hi = s->values[i];
         }
         lo = 0.0;
+        /* a resting world is not "fastest": below 1 cm/s the bar keeps a 0..0.01 m/s range */
+        if (!(hi >= 0.01)) hi = 0.01;
         q->map = PL_CMAP_SEQUENTIAL;
         snprintf(q->label, sizeof q->label, "speed (m/s)");
     } else if (opt->coloring == PL_COLOR_BY_TEMPERATURE) {
@@ -164,6 +172,8 @@ static void body_quantity(pl_render_scene *s, const pl_render_options *opt, quan
         }
     }
     if (!isfinite(hi) || !isfinite(lo)) { lo = 0.0; hi = 0.0; }
+    q->auto_lo = lo;
+    q->auto_hi = hi;
     if (opt->color_max > opt->color_min) {
         lo = opt->color_min;
         hi = opt->color_max;
@@ -188,20 +198,39 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
         snprintf(err, errlen, "image size %dx%d is out of range (16..16384 pixels each side)", W, H);
         return -1;
     }
+    int W_img = W;
+    /* a host's panel at the right edge: everything of the scene is laid out left of it */
+    if (opt->reserve_right > 0 && opt->reserve_right < W - 64) W -= opt->reserve_right;
     pl_draw_list_clear(dl);
     dl->background = opt->background;
     unsigned L = opt->layers;
     float fs = pl_render_font_size(W, H);
 
+    pl_render_scene_denoise_fluid(s);
     quantity q;
     body_quantity(s, opt, &q);
+    if (q.active && q.auto_hi > q.auto_lo) {
+        dl->auto_color_set = 1;
+        dl->auto_color_lo = q.auto_lo;
+        dl->auto_color_hi = q.auto_hi;
+    }
     /* the colour bar shows the fluid field when it is drawn, else the body quantity */
     quantity fq;
     memset(&fq, 0, sizeof fq);
-    if ((L & PL_LAYER_PRESSURE) &&
+    if ((L & (PL_LAYER_PRESSURE | PL_LAYER_ISOLINES)) &&
         pl_fluid_field_range(s, opt, &fq.vmin, &fq.vmax, &fq.map, fq.label, sizeof fq.label,
-                             &fq.unit_factor))
-        fq.active = 1;
+                             &fq.unit_factor)) {
+        fq.active = (L & PL_LAYER_PRESSURE) != 0;
+        pl_render_options auto_opt = *opt;
+        auto_opt.fluid_min = auto_opt.fluid_max = 0.0;
+        double alo, ahi, uf;
+        pl_colormap am;
+        char al[64];
+        pl_fluid_field_range(s, &auto_opt, &alo, &ahi, &am, al, sizeof al, &uf);
+        dl->auto_field_set = 1;
+        dl->auto_field_lo = alo;
+        dl->auto_field_hi = ahi;
+    }
     const quantity *bar = fq.active ? &fq : &q;
 
     /* Layout: a top band for title/time, a bottom band for the scale bar, a right band for
@@ -219,6 +248,7 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
         int any_fixed = 0;
         for (int m = 0; m < s->material_count && legend_n < PL_RENDER_MAX_MATERIAL_COLORS; m++) {
             int used = 0;
+            if (m < 32 && (opt->hidden_materials >> m) & 1u) continue;
             for (int i = 0; i < s->body_count && !used; i++)
                 used = s->bodies[i].material == m && s->bodies[i].motion == PL_MOTION_DYNAMIC &&
                        s->bodies[i].shape != PL_SHAPE_SEGMENT;
@@ -248,9 +278,9 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     if (right_w > 0.45 * W) right_w = 0.45 * W;
     pl_px_rect area = {0.0, top_h, W - right_w, H - bot_h};
     if (opt->auto_camera || !(opt->view_hi.x > opt->view_lo.x) || !(opt->view_hi.y > opt->view_lo.y))
-        dl->camera = pl_camera_fit(s->lo, s->hi, W, H, area, opt->margin);
+        dl->camera = pl_camera_fit(s->lo, s->hi, W_img, H, area, opt->margin);
     else
-        dl->camera = pl_camera_fit(opt->view_lo, opt->view_hi, W, H, area, 0.0);
+        dl->camera = pl_camera_fit(opt->view_lo, opt->view_hi, W_img, H, area, 0.0);
     dl->clip = area;
     dl->has_clip = 1;
 
@@ -335,7 +365,7 @@ int pl_render_build(const pl_world *w, const pl_render_options *opt, pl_draw_lis
     pl_render_scene_init(&s);
     int rc = pl_render_scene_capture(&s, w);
     if (rc == 0 && (opt->layers & PL_RENDER_FLUID_LAYERS))
-        rc = pl_render_scene_capture_fluid(&s, w, opt->fluid_field);
+        rc = pl_render_scene_capture_fluid_opt(&s, w, opt);
     if (rc) snprintf(err, errlen, "out of memory while reading the world");
     else rc = pl_render_build_scene(dl, &s, opt, err, errlen);
     pl_render_scene_free(&s);
@@ -378,4 +408,72 @@ int pl_render_to_rgba(const pl_world *w, const pl_render_options *opt, unsigned 
     }
     pl_draw_list_free(&dl);
     return rc;
+}
+
+/* ------------------------------------------------------ fixed ranges across a run */
+
+void pl_render_ranges_apply(const pl_render_ranges *r, const pl_render_options *opt,
+                            pl_render_options *out) {
+    *out = *opt;
+    if (!r) return;
+    if (r->field_set && !(opt->fluid_max > opt->fluid_min)) {
+        out->fluid_min = r->field_lo;
+        out->fluid_max = r->field_hi;
+    }
+    if (r->color_set && !(opt->color_max > opt->color_min)) {
+        out->color_min = r->color_lo;
+        out->color_max = r->color_hi;
+    }
+    if (r->vscale_set && !(opt->velocity_scale > 0.0)) out->velocity_scale = r->vscale;
+}
+
+void pl_render_ranges_update(pl_render_ranges *r, const pl_draw_list *dl) {
+    if (dl->auto_field_set && dl->auto_field_hi > dl->auto_field_lo) {
+        if (!r->field_set) {
+            r->field_lo = dl->auto_field_lo;
+            r->field_hi = dl->auto_field_hi;
+            r->field_set = 1;
+        } else if (dl->auto_field_lo < r->field_lo || dl->auto_field_hi > r->field_hi) {
+            r->field_lo = fmin(r->field_lo, dl->auto_field_lo);
+            r->field_hi = fmax(r->field_hi, dl->auto_field_hi);
+            r->field_changed = 1;
+        }
+    }
+    if (dl->auto_color_set && dl->auto_color_hi > dl->auto_color_lo) {
+        if (!r->color_set) {
+            r->color_lo = dl->auto_color_lo;
+            r->color_hi = dl->auto_color_hi;
+            r->color_set = 1;
+        } else if (dl->auto_color_lo < r->color_lo || dl->auto_color_hi > r->color_hi) {
+            r->color_lo = fmin(r->color_lo, dl->auto_color_lo);
+            r->color_hi = fmax(r->color_hi, dl->auto_color_hi);
+            r->color_changed = 1;
+        }
+    }
+    if (dl->auto_vscale > 0.0) {
+        if (!r->vscale_set) {
+            r->vscale = dl->auto_vscale;
+            r->vscale_set = 1;
+        } else if (dl->auto_vscale < r->vscale) {
+            r->vscale = dl->auto_vscale;
+            r->vscale_changed = 1;
+        }
+    }
+    r->frames++;
+}
+
+void pl_render_ranges_note(const pl_render_ranges *r, FILE *out) {
+    if (!r || !out) return;
+    if (r->field_changed)
+        fprintf(out, "porelab: note: the fluid colour range grew during the run (it is never "
+                     "re-fitted per frame, only widened); for one range from the first frame set "
+                     "render.fluid_range = { %.4g, %.4g }\n", r->field_lo, r->field_hi);
+    if (r->color_changed)
+        fprintf(out, "porelab: note: the body colour range grew during the run; for one range "
+                     "from the first frame set render.color_range = { %.4g, %.4g }\n",
+                r->color_lo, r->color_hi);
+    if (r->vscale_changed)
+        fprintf(out, "porelab: note: the velocity arrows were shortened during the run to fit "
+                     "faster flow; for one scale from the first frame set "
+                     "render.velocity_scale = %.4g (m per m/s)\n", r->vscale);
 }

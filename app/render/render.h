@@ -5,6 +5,7 @@
 #define PORELAB_RENDER_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include "porelab/world.h"
 
 #ifdef __cplusplus
@@ -70,7 +71,42 @@ typedef struct pl_render_options {
     int isoline_count;        ///< about this many nice isoline levels; default 10
     double fluid_min, fluid_max; ///< range of the fluid field; fluid_max <= fluid_min = automatic
     double velocity_scale;    ///< arrow length per unit Darcy velocity, m per (m/s); 0 = automatic
+    int has_excess_reference; ///< 1: excess pore pressure is rho_f g (h - excess_reference)
+    double excess_reference;  ///< head h0 (m) of the hydrostatic state the excess pressure is
+                              ///< measured from (e.g. the outlet's); default: the engine's
+                              ///< (mean prescribed head)
+    double record_from;       ///< frames before this world time (s) are not written (a run's
+                              ///< preparation); the scene's hooks still run; default 0
+    int reserve_right;        ///< px at the right edge left to the host (a window's control panel):
+                              ///< the scene and its annotations stay left of it; default 0
+    unsigned hidden_materials;///< bit m set: bodies of material m (< 32) are not drawn (numerical
+                              ///< helpers such as mesh-confining slabs); default 0
 } pl_render_options;
+
+/// Fixed ranges across a run (house style: never re-fitted per frame). A run keeps one of
+/// these: after each frame it takes in the frame's automatic ranges (the fluid field and body
+/// colouring grow to the union of all frames so far, the velocity arrow scale shrinks to fit
+/// the fastest flow so far), and before each frame it fills the options' automatic ranges
+/// from it. A range that still changed after the first frame is reported at the end with the
+/// setting that fixes it from the start (pl_render_ranges_note).
+typedef struct pl_render_ranges {
+    int field_set, color_set, vscale_set;
+    double field_lo, field_hi;   ///< fluid field, SI units
+    double color_lo, color_hi;   ///< body colouring quantity, SI units
+    double vscale;               ///< m per (m/s)
+    int field_changed, color_changed, vscale_changed;
+    int frames;
+} pl_render_ranges;
+
+/// Copies opt into out with the automatic ranges replaced by the run's so far.
+void pl_render_ranges_apply(const pl_render_ranges *r, const pl_render_options *opt,
+                            pl_render_options *out);
+/// Takes in the automatic ranges of the frame just built into dl.
+struct pl_draw_list;
+void pl_render_ranges_update(pl_render_ranges *r, const struct pl_draw_list *dl);
+/// Writes a note (one line each) for ranges that changed during the run, with the render
+/// setting that would have fixed them; nothing when all stayed fixed.
+void pl_render_ranges_note(const pl_render_ranges *r, FILE *out);
 
 pl_render_options pl_default_render_options(void);
 
@@ -124,6 +160,10 @@ int pl_frame_writer_count(const pl_frame_writer *fw);
 /// Numbers the next frame `index` (a run resumed from a restart file goes on numbering where
 /// the run that never stopped would be). Call before the first frame.
 void pl_frame_writer_start_at(pl_frame_writer *fw, int index);
+/// Removes DIR/frame_NNNNNN.png with NNNNNN >= from (the frames of an earlier run into the
+/// same folder); prints one note to `note` (may be NULL) when any were removed. Returns the
+/// count. The frame writers call it before their first frame.
+int pl_frames_remove_stale(const char *dir, int from, FILE *note);
 /// Finishes (closes the video pipe, waits for ffmpeg) and frees; nulls the pointer.
 /// Returns 0 or -1 with a message (for example when ffmpeg failed).
 int pl_frame_writer_close(pl_frame_writer **fw, char *err, size_t errlen);

@@ -9,6 +9,8 @@ list(APPEND PL_RENDER_SOURCES
   render/colormap.c
   render/isolines.c
   render/backend_cairo.c
+  render/svg_text.c
+  render/label_place.c
   render/raster_gouraud.c
   render/raster_aa.c
   render/png_io.c

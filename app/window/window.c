@@ -31,7 +31,26 @@ typedef struct win {
     char msg[256];
     double msg_until, fps, last_frame;
     pl_image img;
+    int mouse_in;       /* the pointer is inside the window */
+    /* the control panel at the right edge (outside the scene's area), while the HUD shows */
+    int panel_w;
+    int nhit;
+    struct { pl_px_rect r; int kind, index; } hit[48]; /* clickable controls of the last frame */
 } win;
+
+enum { HIT_PLAY = 0, HIT_STEP, HIT_RESTART, HIT_REWIND, HIT_LAYER, HIT_SLIDER };
+static const unsigned panel_layers[] = {PL_LAYER_BODIES, PL_LAYER_FORCES, PL_LAYER_PRESSURE,
+                                        PL_LAYER_ISOLINES, PL_LAYER_VELOCITY, PL_LAYER_OVERLAY};
+static const char *const panel_layer_names[] = {"grains and bodies", "force chains", "pressure",
+                                                "isolines", "velocity arrows", "scene labels"};
+
+/* Width of the control panel: a quarter of the window, 220..320 px; 0 while the HUD is off. */
+static int panel_width(const win *g)
+{
+    if (!g->show_hud) return 0;
+    int w = g->sim.ropt.width / 4;
+    return w < 220 ? 220 : w > 320 ? 320 : w;
+}
 
 static double now_s(void) { return (double)SDL_GetPerformanceCounter() / (double)SDL_GetPerformanceFrequency(); }
 
@@ -154,6 +173,8 @@ static int fluid_element_at(win *g, pl_vec2 p, pl_vec2 *vel, double *porosity)
 static int build_scene(win *g)
 {
     char err[900];
+    g->panel_w = panel_width(g);
+    g->sim.ropt.reserve_right = g->panel_w;
     int present = pl_scene_overlay(g->sim.s, &g->sim.overlay);
     g->sim.ropt.overlay = present > 0 ? &g->sim.overlay : NULL;
     if (present < 0) snprintf(g->sim.error, sizeof g->sim.error, "%s", pl_scene_error(g->sim.s));
@@ -167,7 +188,7 @@ static int build_scene(win *g)
     int rc = pl_render_scene_capture(&g->rs, g->sim.w);
     g->rs_fluid = 0;
     if (rc == 0 && (g->sim.ropt.layers & fluid_layers)) {
-        rc = pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
+        rc = pl_render_scene_capture_fluid_opt(&g->rs, g->sim.w, &g->sim.ropt);
         g->rs_fluid = 1;
     }
     if (rc != 0) snprintf(err, sizeof err, "out of memory while reading the world");
@@ -189,109 +210,247 @@ static double measure(void *ud, const char *s, float size)
     return pl_gl_text_width((pl_gl *)ud, s, size);
 }
 
+/* A value with about four significant digits and its unit scaled (Pa -> kPa -> MPa). */
+static void fmt_pa(char *out, size_t n, double v)
+{
+    double a = fabs(v);
+    if (a < 0.05) snprintf(out, n, "0 Pa");
+    else if (a < 1e3) snprintf(out, n, "%.1f Pa", v);
+    else if (a < 1e6) snprintf(out, n, "%.3g kPa", v / 1e3);
+    else snprintf(out, n, "%.4g MPa", v / 1e6);
+}
+
+static void fmt_speed(char *out, size_t n, double v)
+{
+    double a = fabs(v);
+    if (a < 1e-4) snprintf(out, n, "0 m/s (at rest)");
+    else if (a < 0.1) snprintf(out, n, "%.1f mm/s", v * 1e3);
+    else snprintf(out, n, "%.3g m/s", v);
+}
+
+typedef struct panel_ctx {
+    win *g;
+    pl_draw_list *h;
+    double x0, x1, y;
+    float fs;
+    pl_rgba ink;
+} panel_ctx;
+
+static void add_hit(win *g, pl_px_rect r, int kind, int index)
+{
+    if (g->nhit >= (int)(sizeof g->hit / sizeof g->hit[0])) return;
+    g->hit[g->nhit].r = r;
+    g->hit[g->nhit].kind = kind;
+    g->hit[g->nhit].index = index;
+    g->nhit++;
+}
+
+static void panel_text(panel_ctx *c, const char *text, float size, pl_rgba ink)
+{
+    pl_dl_text(c->h, PL_SPACE_PIXEL, (pl_vec2){c->x0, c->y + 0.5 * 1.3 * size}, text, size,
+               PL_ANCHOR_LEFT | PL_ANCHOR_MIDDLE, 0.0f, ink, NULL);
+    c->y += 1.3 * size;
+}
+
+static void panel_heading(panel_ctx *c, const char *text)
+{
+    c->y += 0.4 * c->fs;
+    panel_text(c, text, c->fs, pl_rgb(0.65, 0.78, 1.0));
+}
+
+static void panel_button(panel_ctx *c, double x, double w, const char *label, int kind, int on)
+{
+    pl_px_rect r = {x, c->y, x + w, c->y + 1.7 * c->fs};
+    pl_vec2 box[4] = {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
+    pl_style st = pl_style_fill_stroke(on ? pl_rgb(0.25, 0.42, 0.70) : pl_rgb(0.22, 0.22, 0.26),
+                                       pl_rgb(0.55, 0.55, 0.6), 1.0f);
+    pl_dl_polygon(c->h, PL_SPACE_PIXEL, box, 4, &st);
+    pl_dl_text(c->h, PL_SPACE_PIXEL, (pl_vec2){0.5 * (r.x0 + r.x1), 0.5 * (r.y0 + r.y1)}, label,
+               c->fs, PL_ANCHOR_CENTER | PL_ANCHOR_MIDDLE, 0.0f, c->ink, NULL);
+    add_hit(c->g, r, kind, 0);
+}
+
 static void build_hud(win *g)
 {
     pl_draw_list *h = &g->hud;
     pl_draw_list_clear(h);
     h->camera = g->scene_dl.camera;
+    g->nhit = 0;
     float fs = 13.0f;
     pl_rgba ink = pl_rgb(0.95, 0.95, 0.92);
     if (g->grab >= 0 && g->grab < g->rs.body_count) { /* the spring */
         pl_vec2 a = pl_camera_to_px(&h->camera, g->rs.bodies[g->grab].position);
         pl_dl_line(h, PL_SPACE_PIXEL, a, (pl_vec2){g->mx, g->my}, pl_rgb_hex(0xE08020), 2.0f);
     }
-    if (!g->show_hud) return;
-    char l[8][200];
-    const char *lines[8];
-    int n = 0;
+    if (!g->show_hud || g->panel_w <= 0) return;
+    double W = h->camera.width, H = h->camera.height, P = g->panel_w;
+    /* the panel: a dark strip right of the scene's area; nothing of the HUD is drawn left of
+     * W - P (checked by tests/gl/test_window_xvfb.sh) */
+    pl_vec2 strip[4] = {{W - P, 0}, {W, 0}, {W, H}, {W - P, H}};
+    pl_style bg = pl_style_fill(pl_rgb(0.12, 0.12, 0.14));
+    pl_dl_polygon(h, PL_SPACE_PIXEL, strip, 4, &bg);
+    panel_ctx c = {g, h, W - P + 10.0, W - 10.0, 8.0, fs, ink};
+    double bw = (c.x1 - c.x0 - 6.0) / 2.0;
+    char l[256];
     pl_world *w = g->sim.w;
-    snprintf(l[n], sizeof l[n], "t = %.4f s   step %lld   %s   %lld steps/frame   %.0f fps   "
-             "colour: %s   [h] help", pl_world_time(w), pl_wsim_steps(&g->sim),
-             g->sim.stopped ? "STOPPED" : g->playing ? "playing" : "paused", g->speed, g->fps,
-             coloring_name(g->sim.ropt.coloring));
-    lines[n] = l[n]; n++;
-    if (g->msg[0] && now_s() < g->msg_until) { snprintf(l[n], sizeof l[n], "%.190s", g->msg); lines[n] = l[n]; n++; }
-    pl_hud_panel(h, 2, 0.0, lines, n, fs, ink, measure, g->gl);
 
-    /* values under the cursor */
-    n = 0;
-    pl_vec2 p = pl_camera_to_world(&h->camera, (pl_vec2){g->mx, g->my});
-    snprintf(l[n], sizeof l[n], "x = %.4g m, y = %.4g m", p.x, p.y);
-    lines[n] = l[n]; n++;
-    if (g->hover >= 0 && g->hover < g->rs.body_count) {
-        const pl_body_info *b = &g->rs.bodies[g->hover];
-        const char *shape = b->shape == PL_SHAPE_DISC ? "disc" : b->shape == PL_SHAPE_POLYGON ? "polygon" : "wall";
-        const char *mot = b->motion == PL_MOTION_DYNAMIC ? "free" : b->motion == PL_MOTION_FIXED ? "fixed" : "prescribed";
-        snprintf(l[n], sizeof l[n], "body %d (%s, %s, %s)", g->hover + 1, shape, mot,
-                 b->material < g->rs.material_count ? g->rs.material_names[b->material] : "?");
-        lines[n] = l[n]; n++;
-        snprintf(l[n], sizeof l[n], "v = (%.4g, %.4g) m/s  |v| = %.4g m/s", b->velocity.x,
-                 b->velocity.y, hypot(b->velocity.x, b->velocity.y));
-        lines[n] = l[n]; n++;
-        if (g->rs.stress) {
-            snprintf(l[n], sizeof l[n], "mean stress = %.4g Pa   force = (%.3g, %.3g) N",
-                     g->rs.stress[g->hover], b->force.x, b->force.y);
-            lines[n] = l[n]; n++;
-        }
-    }
-    if (pl_world_fluid_node_count(w) > 0) {
-        double pr = 0, head = NAN;
-        if (pl_world_fluid_pressure_at(w, p, &pr, &head)) {
-            snprintf(l[n], sizeof l[n], "pore pressure = %.4g Pa   head = %.4g m", pr, head);
-            lines[n] = l[n]; n++;
-            pl_vec2 v;
-            double por;
-            if (fluid_element_at(g, p, &v, &por)) {
-                snprintf(l[n], sizeof l[n], "Darcy velocity = (%.3g, %.3g) m/s   porosity = %.3f",
-                         v.x, v.y, por);
-                lines[n] = l[n]; n++;
+    /* transport */
+    panel_button(&c, c.x0, bw, g->playing ? "pause" : "play", HIT_PLAY, g->playing);
+    panel_button(&c, c.x0 + bw + 6.0, bw, "one step", HIT_STEP, 0);
+    c.y += 1.7 * fs + 5.0;
+    panel_button(&c, c.x0, bw, "restart", HIT_RESTART, 0);
+    panel_button(&c, c.x0 + bw + 6.0, bw, "rewind", HIT_REWIND, 0);
+    c.y += 1.7 * fs + 6.0;
+    snprintf(l, sizeof l, "t = %.3f s   %s   colour: %s", pl_world_time(w),
+             g->sim.stopped ? "stopped" : g->playing ? "playing" : "paused",
+             coloring_name(g->sim.ropt.coloring));
+    panel_text(&c, l, fs, ink);
+
+    if (g->show_help) {
+        panel_heading(&c, "keys (h hides)");
+        for (int i = 0; i < pl_hud_help_count; i++) { /* one entry per line */
+            const char *p = pl_hud_help[i];
+            while (*p) {
+                while (*p == ' ') p++;
+                const char *q = strstr(p, "  ");
+                size_t len = q ? (size_t)(q - p) : strlen(p);
+                if (len > 0 && c.y < H - 2 * fs) {
+                    snprintf(l, sizeof l, "%.*s", (int)len, p);
+                    panel_text(&c, l, 11.0f, ink);
+                }
+                p += len;
             }
         }
-    } else if (g->rs.fluid_tri_count > 0 && g->rs.fluid_field == PL_FLUID_PRESSURE) {
-        /* a model without a Darcy mesh (hydrostatic water): its field, linear in each triangle */
-        const pl_render_scene *s = &g->rs;
-        for (int t = 0; t < s->fluid_tri_count; t++) {
-            const int *k = s->fluid_tris + 3 * t;
-            const pl_vec2 a = s->fluid_nodes[k[0]], b = s->fluid_nodes[k[1]], c = s->fluid_nodes[k[2]];
-            const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-            if (det == 0) continue;
-            const double l1 = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / det;
-            const double l2 = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
-            if (l1 < -1e-9 || l2 < -1e-9 || l1 + l2 > 1 + 1e-9) continue;
-            const double pr = (1 - l1 - l2) * s->fluid_values[k[0]] + l1 * s->fluid_values[k[1]] +
-                              l2 * s->fluid_values[k[2]];
-            snprintf(l[n], sizeof l[n], "water pressure = %.4g Pa", pr);
-            lines[n] = l[n]; n++;
-            break;
-        }
+        return;
     }
-    pl_hud_panel(h, 3, 2.0 * 1.35 * fs + 2.0 * fs, lines, n, fs, ink, measure, g->gl);
 
-    /* parameters and errors */
-    n = 0;
-    for (int i = 0; i < g->sim.nparams && n < 7; i++) {
+    /* layers */
+    panel_heading(&c, "show");
+    for (int i = 0; i < (int)(sizeof panel_layers / sizeof panel_layers[0]); i++) {
+        int on = (g->sim.ropt.layers & panel_layers[i]) != 0;
+        pl_px_rect r = {c.x0, c.y + 2.0, c.x0 + fs, c.y + 2.0 + fs};
+        pl_vec2 box[4] = {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
+        pl_style st = on ? pl_style_fill_stroke(pl_rgb(0.35, 0.6, 0.95), ink, 1.0f)
+                         : pl_style_stroke(ink, 1.0f);
+        pl_dl_polygon(h, PL_SPACE_PIXEL, box, 4, &st);
+        pl_dl_text(h, PL_SPACE_PIXEL, (pl_vec2){c.x0 + 1.6 * fs, c.y + 0.65 * 1.3 * fs},
+                   panel_layer_names[i], fs, PL_ANCHOR_LEFT | PL_ANCHOR_MIDDLE, 0.0f, ink, NULL);
+        add_hit(g, (pl_px_rect){c.x0, c.y, c.x1, c.y + 1.3 * fs}, HIT_LAYER, i);
+        c.y += 1.45 * fs;
+    }
+
+    /* parameters: sliders */
+    if (g->sim.nparams > 0) panel_heading(&c, "parameters (drag or click)");
+    for (int i = 0; i < g->sim.nparams && c.y < H - 12 * fs; i++) {
         const pl_wparam *q = &g->sim.params[i];
-        snprintf(l[n], sizeof l[n], "%s %s = %.4g %s  [%.4g .. %.4g]", i == g->param_sel ? ">" : " ",
-                 q->name, q->value, q->unit, q->min, q->max);
-        lines[n] = l[n]; n++;
+        snprintf(l, sizeof l, "%s: %.4g %s", q->name, q->value, q->unit);
+        panel_text(&c, l, fs, i == g->param_sel ? pl_rgb(1.0, 0.85, 0.45) : ink);
+        double y = c.y + 0.5 * fs, f = q->max > q->min ? (q->value - q->min) / (q->max - q->min) : 0.0;
+        f = f < 0 ? 0 : f > 1 ? 1 : f;
+        pl_dl_line(h, PL_SPACE_PIXEL, (pl_vec2){c.x0, y}, (pl_vec2){c.x1, y}, pl_rgb(0.5, 0.5, 0.55), 3.0f);
+        pl_style knob = pl_style_fill(pl_rgb(1.0, 0.85, 0.45));
+        pl_dl_circle(h, PL_SPACE_PIXEL, (pl_vec2){c.x0 + f * (c.x1 - c.x0), y}, 0.45 * fs, &knob);
+        add_hit(g, (pl_px_rect){c.x0, y - 0.6 * fs, c.x1, y + 0.6 * fs}, HIT_SLIDER, i);
+        c.y += 1.3 * fs;
     }
-    if (n > 0) pl_hud_panel(h, 1, 2.2 * fs, lines, n, fs, ink, measure, g->gl);
-    if (g->sim.error[0]) {
-        /* wrap the message at ~90 characters */
-        char buf[1024];
-        snprintf(buf, sizeof buf, "%s", g->sim.error);
-        int m = 0;
-        const char *el[8];
-        char wrap[8][100];
-        size_t len = strlen(buf);
-        for (size_t off = 0; off < len && m < 8; off += 90, m++) {
-            snprintf(wrap[m], sizeof wrap[m], "%.90s", buf + off);
-            el[m] = wrap[m];
+
+    /* materials of the moving bodies: colour, name, density */
+    panel_heading(&c, "materials");
+    for (int m = 0; m < g->rs.material_count && c.y < H - 8 * fs; m++) {
+        int used = 0;
+        for (int i = 0; i < g->rs.body_count && !used; i++)
+            used = g->rs.bodies[i].material == m && g->rs.bodies[i].motion == PL_MOTION_DYNAMIC &&
+                   g->rs.bodies[i].shape != PL_SHAPE_SEGMENT;
+        if (!used) continue;
+        pl_rgba col = g->sim.ropt.material_color_count > 0
+                          ? g->sim.ropt.material_colors[m % g->sim.ropt.material_color_count]
+                          : pl_material_palette(m);
+        col.a = 1.0f;
+        pl_style st = pl_style_fill_stroke(col, ink, 1.0f);
+        pl_dl_circle(h, PL_SPACE_PIXEL, (pl_vec2){c.x0 + 0.5 * fs, c.y + 0.65 * fs}, 0.45 * fs, &st);
+        pl_material_def md = pl_world_material(w, m);
+        snprintf(l, sizeof l, "%s, %.0f kg/m\u00B3", g->rs.material_names[m], md.density);
+        pl_dl_text(h, PL_SPACE_PIXEL, (pl_vec2){c.x0 + 1.4 * fs, c.y + 0.65 * fs}, l, fs,
+                   PL_ANCHOR_LEFT | PL_ANCHOR_MIDDLE, 0.0f, ink, NULL);
+        c.y += 1.35 * fs;
+    }
+
+    /* values under the cursor, only where they mean something */
+    if (g->mouse_in && g->mx < W - P) {
+        panel_heading(&c, "under the cursor");
+        char v1[64];
+        pl_vec2 p = pl_camera_to_world(&h->camera, (pl_vec2){g->mx, g->my});
+        snprintf(l, sizeof l, "x = %.1f mm, y = %.1f mm", 1e3 * p.x, 1e3 * p.y);
+        panel_text(&c, l, fs, ink);
+        if (g->hover >= 0 && g->hover < g->rs.body_count) {
+            const pl_body_info *b = &g->rs.bodies[g->hover];
+            const char *mot = b->motion == PL_MOTION_DYNAMIC ? "" : b->motion == PL_MOTION_FIXED ? ", fixed" : ", driven";
+            snprintf(l, sizeof l, "%s%s", b->material < g->rs.material_count ? g->rs.material_names[b->material] : "body", mot);
+            panel_text(&c, l, fs, ink);
+            if (b->motion == PL_MOTION_DYNAMIC) {
+                fmt_speed(v1, sizeof v1, hypot(b->velocity.x, b->velocity.y));
+                snprintf(l, sizeof l, "speed %s", v1);
+                panel_text(&c, l, fs, ink);
+                if (b->area > 0) {
+                    snprintf(l, sizeof l, "mass %.3g kg per m, density %.0f kg/m\u00B3", b->mass, b->mass / b->area);
+                    panel_text(&c, l, 11.0f, ink);
+                }
+                if (g->rs.stress && fabs(g->rs.stress[g->hover]) > 0.05) {
+                    fmt_pa(v1, sizeof v1, g->rs.stress[g->hover]);
+                    snprintf(l, sizeof l, "mean stress %s", v1);
+                    panel_text(&c, l, fs, ink);
+                }
+            }
+        } else if (pl_world_fluid_node_count(w) > 0) {
+            double pr = 0, head = NAN;
+            if (pl_world_fluid_pressure_at(w, p, &pr, &head)) {
+                fmt_pa(v1, sizeof v1, pr);
+                snprintf(l, sizeof l, "water pressure %s", v1);
+                panel_text(&c, l, fs, ink);
+                pl_vec2 v;
+                double por;
+                if (fluid_element_at(g, p, &v, &por)) {
+                    fmt_speed(v1, sizeof v1, hypot(v.x, v.y));
+                    snprintf(l, sizeof l, "Darcy velocity %s", v1);
+                    panel_text(&c, l, fs, ink);
+                    if (por < 0.99) { /* among grains only */
+                        snprintf(l, sizeof l, "porosity %.2f", por);
+                        panel_text(&c, l, fs, ink);
+                    }
+                }
+            }
+        } else if (g->rs.fluid_tri_count > 0 && g->rs.fluid_field == PL_FLUID_PRESSURE) {
+            const pl_render_scene *s = &g->rs;
+            for (int t = 0; t < s->fluid_tri_count; t++) {
+                const int *k = s->fluid_tris + 3 * t;
+                const pl_vec2 a = s->fluid_nodes[k[0]], b = s->fluid_nodes[k[1]], cc = s->fluid_nodes[k[2]];
+                const double det = (b.x - a.x) * (cc.y - a.y) - (cc.x - a.x) * (b.y - a.y);
+                if (det == 0) continue;
+                const double l1 = ((p.x - a.x) * (cc.y - a.y) - (cc.x - a.x) * (p.y - a.y)) / det;
+                const double l2 = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
+                if (l1 < -1e-9 || l2 < -1e-9 || l1 + l2 > 1 + 1e-9) continue;
+                const double pr = (1 - l1 - l2) * s->fluid_values[k[0]] + l1 * s->fluid_values[k[1]] +
+                                  l2 * s->fluid_values[k[2]];
+                fmt_pa(v1, sizeof v1, pr);
+                snprintf(l, sizeof l, "water pressure %s", v1);
+                panel_text(&c, l, fs, ink);
+                break;
+            }
         }
-        pl_hud_panel(h, 0, 0.0, el, m, fs, pl_rgb_hex(0xFF8080), measure, g->gl);
     }
-    if (g->show_help)
-        pl_hud_panel(h, 0, g->sim.error[0] ? 8.0 * 1.35 * fs : 0.0, pl_hud_help, pl_hud_help_count, fs, ink, measure, g->gl);
+
+    /* messages and errors, wrapped to the panel */
+    const char *texts[2] = {g->msg[0] && now_s() < g->msg_until ? g->msg : "", g->sim.error};
+    for (int k = 0; k < 2; k++) {
+        const char *p = texts[k];
+        size_t len = strlen(p), per = (size_t)((c.x1 - c.x0) / (0.55 * 11.0));
+        if (per < 10) per = 10;
+        for (size_t off = 0; off < len && c.y < H - 1.5 * fs; off += per) {
+            snprintf(l, sizeof l, "%.*s", (int)(per < 200 ? per : 200), p + off);
+            panel_text(&c, l, 11.0f, k ? pl_rgb_hex(0xFF8080) : pl_rgb(1.0, 0.85, 0.45));
+        }
+    }
+    (void)measure;
 }
 
 static void screenshot(win *g)
@@ -322,8 +481,9 @@ static void screenshot(win *g)
            (unsigned long long)pl_world_state_hash(g->sim.w));
     /* the view, so that pixels can be mapped to the world: x_px = (x - cx) s + px, y_px =
      * py - (y - cy) s */
-    printf("camera: scale %.9g center %.9g %.9g px_center %.9g %.9g\n", c->scale, c->center.x,
-           c->center.y, c->px_center.x, c->px_center.y);
+    if (getenv("PORELAB_WINDOW_DEBUG")) /* for tests that click into the scene */
+        printf("camera: scale %.9g center %.9g %.9g px_center %.9g %.9g\n", c->scale, c->center.x,
+               c->center.y, c->px_center.x, c->px_center.y);
     fflush(stdout);
     snprintf(g->msg, sizeof g->msg, "wrote %.200s", path);
     g->msg_until = now_s() + 2.5;
@@ -411,8 +571,7 @@ static void key(win *g, SDL_Keycode k, Uint16 mod)
         break;
     case SDLK_r:
         if (pl_wsim_load(&g->sim, !shift) == 0) message(g, shift ? "restarted with the scene's values" : "restarted", 0);
-        g->playing = 0;
-        g->grab = -1;
+        g->grab = -1; /* a playing lab keeps playing from the start */
         break;
     case SDLK_LEFT: case SDLK_BACKSPACE: rewind_to(g, steps - frame_interval(g)); break;
     case SDLK_PAGEDOWN: rewind_to(g, steps - (long long)llround(1.0 / pl_world_dt(g->sim.w))); break;
@@ -478,6 +637,41 @@ static void to_px(win *g, int x, int y, int *px, int *py)
     *py = wh > 0 ? (int)((long)y * dh / wh) : y;
 }
 
+/* A click on the control panel; 1 when it hit a control (or the panel). */
+static int panel_click(win *g, int x, int y, int drag)
+{
+    if (g->panel_w <= 0 || x < g->sim.ropt.width - g->panel_w) return 0;
+    for (int i = 0; i < g->nhit; i++) {
+        const pl_px_rect r = g->hit[i].r;
+        if (x < r.x0 || x > r.x1 || y < r.y0 || y > r.y1) continue;
+        if (drag && g->hit[i].kind != HIT_SLIDER) return 1;
+        switch (g->hit[i].kind) {
+        case HIT_PLAY: key(g, SDLK_SPACE, 0); break;
+        case HIT_STEP: key(g, SDLK_s, 0); break;
+        case HIT_RESTART: key(g, SDLK_r, 0); break;
+        case HIT_REWIND: key(g, SDLK_LEFT, 0); break;
+        case HIT_LAYER: {
+            int k = g->hit[i].index;
+            toggle_layer(g, panel_layers[k], panel_layer_names[k]);
+            break;
+        }
+        case HIT_SLIDER: {
+            int k = g->hit[i].index;
+            pl_wparam *q = &g->sim.params[k];
+            double f = (x - r.x0) / (r.x1 - r.x0);
+            double v = q->min + (f < 0 ? 0 : f > 1 ? 1 : f) * (q->max - q->min);
+            if (q->step > 0) v = q->min + floor((v - q->min) / q->step + 0.5) * q->step;
+            g->param_sel = k;
+            pl_wsim_set_param(&g->sim, k, v);
+            break;
+        }
+        default: break;
+        }
+        return 1;
+    }
+    return 1;
+}
+
 static void event(win *g, const SDL_Event *e)
 {
     int x, y;
@@ -486,12 +680,20 @@ static void event(win *g, const SDL_Event *e)
     case SDL_KEYDOWN: key(g, e->key.keysym.sym, e->key.keysym.mod); break;
     case SDL_MOUSEMOTION:
         to_px(g, e->motion.x, e->motion.y, &x, &y);
+        g->mouse_in = 1;
+        if ((e->motion.state & SDL_BUTTON_LMASK) && g->grab < 0 && !g->panning &&
+            panel_click(g, x, y, 1)) {
+            g->mx = x;
+            g->my = y;
+            break;
+        }
         if (g->panning) pan_by(g, x - g->mx, y - g->my);
         g->mx = x;
         g->my = y;
         break;
     case SDL_MOUSEBUTTONDOWN:
         to_px(g, e->button.x, e->button.y, &g->mx, &g->my);
+        if (e->button.button == SDL_BUTTON_LEFT && panel_click(g, g->mx, g->my, 0)) break;
         g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
         if (e->button.button == SDL_BUTTON_LEFT) {
             if (g->hover >= 0 && g->rs.bodies[g->hover].motion == PL_MOTION_DYNAMIC &&
@@ -513,6 +715,8 @@ static void event(win *g, const SDL_Event *e)
         if (e->wheel.y != 0) zoom_at(g, g->mx, g->my, pow(0.85, e->wheel.y));
         break;
     case SDL_WINDOWEVENT:
+        if (e->window.event == SDL_WINDOWEVENT_LEAVE) g->mouse_in = 0; /* no stale readout */
+        if (e->window.event == SDL_WINDOWEVENT_ENTER) g->mouse_in = 1;
         if (e->window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
             int w, h;
             SDL_GL_GetDrawableSize(g->sdl, &w, &h);
@@ -591,6 +795,15 @@ int pl_window_main(const pl_opts *o)
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 2);
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 1);
     SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    /* never larger than the screen: scaled down (aspect kept) to the display's usable area */
+    SDL_Rect usable;
+    if (SDL_GetDisplayUsableBounds(0, &usable) == 0 && usable.w > 100 && usable.h > 100) {
+        double f = fmin(0.95 * usable.w / g->sim.ropt.width, 0.92 * usable.h / g->sim.ropt.height);
+        if (f < 1.0) {
+            g->sim.ropt.width = (int)(g->sim.ropt.width * f);
+            g->sim.ropt.height = (int)(g->sim.ropt.height * f);
+        }
+    }
     char title[PATH_MAX + 32];
     snprintf(title, sizeof title, "porelab - %s", o->positional[0]);
     g->sdl = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
@@ -651,7 +864,7 @@ int pl_window_main(const pl_opts *o)
         if (g->show_hud) {
             pl_render_scene_stress(&g->rs);
             if (!g->rs_fluid && pl_world_prepare(g->sim.w) == PL_OK && pl_world_fluid_node_count(g->sim.w) > 0)
-                pl_render_scene_capture_fluid(&g->rs, g->sim.w, g->sim.ropt.fluid_field);
+                pl_render_scene_capture_fluid_opt(&g->rs, g->sim.w, &g->sim.ropt);
             g->hover = body_at(g, pl_camera_to_world(&g->scene_dl.camera, (pl_vec2){g->mx, g->my}));
         }
         build_hud(g);

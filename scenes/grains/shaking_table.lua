@@ -31,7 +31,7 @@ for _, wall in pairs(box) do
   wall:shake { amplitude = { P.amp, P.amp / 2 }, frequency = P.freq, start = settle }
 end
 
-local csv = porelab.csv("table.csv", { "t", "table_x", "kinetic", "coordination" })
+local csv = porelab.csv("table.csv", { "t", "table_x", "kinetic", "coordination" }, { "s", "m", "J", "" })
 return {
   world = w,
   run = { t_end = 4.0, fps = 30 },

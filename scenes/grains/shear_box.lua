@@ -26,7 +26,7 @@ box.top:shake { amplitude = { 0.004, 0 }, frequency = 1 }
 box.left:hinge { pivot = box.left:vertices()[2], follow = box.top, height = y_top }
 box.right:hinge { pivot = box.right:vertices()[1], follow = box.top, height = y_top }
 
-local csv = porelab.csv("shear.csv", { "t", "strain", "shear_force", "normal_force" })
+local csv = porelab.csv("shear.csv", { "t", "strain", "shear_force", "normal_force" }, { "s", "", "N/m", "N/m" })
 local x0 = box.top:position()
 return {
   world = w,

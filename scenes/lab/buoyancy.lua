@@ -29,7 +29,8 @@ for i = 0, 7 do
   w:disc { center = { 0.03 + 0.045 * i, 0.02 + 0.01 * (i % 2) }, radius = 0.012, material = stone }
 end
 
-w:water { x_min = 0, x_max = W, bottom = 0, level = H, density = 1000 }
+-- the water's amount is fixed: a block that goes in pushes the level up (moving level)
+w:water { x_min = 0, x_max = W, bottom = 0, level = H, density = 1000, moving_level = true }
 
 local function density_param(name, i, rho)
   return { name = name, unit = "kg/m3", value = rho, min = 100, max = 3000, step = 100,
@@ -45,11 +46,74 @@ local params = {
     set = function(world, v) world:water_set { density = v } end },
 }
 
+-- The picture: each block with its name, density and mass, its weight (down, from its centre)
+-- and the buoyancy (up, from the centre of its submerged part: rho_f g times the submerged
+-- area, per metre of depth), both to one scale; the water surface with its rise.
+local rho_f, G = 1000, 9.81
+local names = { "wood", "ice", "brick" }
+local N_PER_M = 0.0015 -- m of arrow per N/m of force
+
+-- part of a polygon below the level y = lv: its area and centroid
+local function submerged(v, lv)
+  local out = {}
+  for k = 1, #v do
+    local a, b = v[k], v[k % #v + 1]
+    if a[2] <= lv then out[#out + 1] = a end
+    if (a[2] - lv) * (b[2] - lv) < 0 then
+      local t = (lv - a[2]) / (b[2] - a[2])
+      out[#out + 1] = { a[1] + t * (b[1] - a[1]), lv }
+    end
+  end
+  local A, cx, cy = 0, 0, 0
+  for k = 1, #out do
+    local a, b = out[k], out[k % #out + 1]
+    local c = a[1] * b[2] - b[1] * a[2]
+    A, cx, cy = A + c, cx + (a[1] + b[1]) * c, cy + (a[2] + b[2]) * c
+  end
+  if math.abs(A) < 1e-12 then return 0, nil end
+  return A / 2, { cx / (3 * A), cy / (3 * A) }
+end
+
+local function overlay(world)
+  local lv = world:water_level()
+  local items = {
+    { line = { { 0, lv }, { W, lv } }, color = "#1f4e9c", width = 2 },
+    { text = string.format("water surface %+.1f mm", math.abs(lv - H) < 5e-5 and 0 or 1000 * (lv - H)), at = { W - 0.005, lv + 0.006 },
+      anchor = "right", size = 14, color = "#1f4e9c" },
+  }
+  for i, b in ipairs(blocks) do
+    local x, y = b:position()
+    local m = b:mass()
+    local weight = m * G
+    local A, c = submerged(b:vertices(), lv)
+    local buoy = rho_f * G * A
+    items[#items + 1] = { arrow = { { x - 0.004, y }, { x - 0.004, y - N_PER_M * weight } }, color = "#b00000", width = 3 }
+    if c then
+      items[#items + 1] = { arrow = { { c[1] + 0.004, c[2] }, { c[1] + 0.004, c[2] + N_PER_M * buoy } },
+                            color = "#1f4e9c", width = 3 }
+    end
+    -- name, density and mass in a row above the tank, over each block
+    items[#items + 1] = { text = string.format("%s %.0f kg/m\u{00B3}", names[i], m / b:area()),
+                          at = { x, 0.405 }, anchor = "center", size = 14 }
+    items[#items + 1] = { text = string.format("%.2f kg per m", m), at = { x, 0.392 },
+                          anchor = "center", size = 12 }
+  end
+  -- key, in the air above the water
+  items[#items + 1] = { arrow = { { 0.262, 0.368 }, { 0.285, 0.368 } }, color = "#b00000", width = 3 }
+  items[#items + 1] = { text = "weight", at = { 0.29, 0.368 }, anchor = "left", size = 14 }
+  items[#items + 1] = { arrow = { { 0.262, 0.350 }, { 0.285, 0.350 } }, color = "#1f4e9c", width = 3 }
+  items[#items + 1] = { text = "buoyancy", at = { 0.29, 0.350 }, anchor = "left", size = 14 }
+  return items
+end
+
 return {
   world = w,
   params = params,
   run = { t_end = 4.0, fps = 30 },
-  render = { size = { 800, 600 }, camera = { -0.03, -0.02, W + 0.03, 0.44 },
-             layers = "bodies,pressure,isolines,colorbar,title,time",
-             title = "What floats? wood, ice, brick in water" },
+  render = { size = { 800, 640 }, camera = { -0.03, -0.02, W + 0.03, 0.46 },
+             layers = "bodies,pressure,isolines,colorbar,scalebar,title,time,overlay",
+             fluid_range = { 0, 3200 }, isolines = 6,
+             colors = { wood = "#b5834a", ice = "#d8eef7", brick = "#a8442c", pebble = "#8c8c8c", tank = "#555555" },
+             overlay = overlay,
+             title = "What floats? Wood, ice and brick in water" },
 }

@@ -116,7 +116,8 @@ local function u_series(Z, Tv) -- Z = distance from the drained boundary / H
   return s
 end
 
-local log = porelab.csv("consolidation.csv", { "t", "column", "settlement", "u_top", "u_mid", "u_bottom", "u_column" })
+local log = porelab.csv("consolidation.csv", { "t", "column", "settlement", "u_top", "u_mid", "u_bottom", "u_column" },
+                        { "s", "", "m", "Pa", "Pa", "Pa", "Pa" })
 local seated, loaded = false, false
 
 -- analysis of one column: M, B, c_v, s0 and U, u at the requested T_v (linear interpolation
@@ -179,16 +180,19 @@ return {
   run = { t_end = T_END, fps = 120 },  -- the frames are also the samples of settlement and pressure
   render = {
     size = { 1000, 480 }, camera = { -0.01, -0.005, NCOL * W + (NCOL - 1) * GAP + 0.01, 0.11 },
-    layers = "bodies,pressure,isolines,colorbar,title,time,overlay",
+    layers = "bodies,pressure,isolines,colorbar,scalebar,title,time,overlay",
     fluid_field = "excess_pressure", fluid_range = { 0, DP },
-    title = "Terzaghi consolidation: load increment on four columns, drained at the floor",
+    isolines = 6,
+    record_from = T_LOAD - 0.1,  -- the columns' settling and the pistons' seating are not shown
+    title = "Terzaghi consolidation: a load step on four grain columns drained at the floor",
     overlay = function(world)
       local items = {}
       for _, col in ipairs(cols) do
         if col.y0 then
           local _, py = col.piston:position()
-          items[#items + 1] = { text = string.format("%.3f mm", 1000 * (col.y0 - py)),
-                                at = { col.x0 + W / 2, 0.104 }, anchor = "center", size = 13 }
+          items[#items + 1] = { text = "settlement", at = { col.x0 + W / 2, 0.1068 }, anchor = "center", size = 13 }
+          items[#items + 1] = { text = string.format("%.2f mm", 1000 * (col.y0 - py)),
+                                at = { col.x0 + W / 2, 0.1022 }, anchor = "center", size = 13 }
         end
       end
       return items
@@ -300,9 +304,9 @@ return {
     end
     local tx, ty = {}, {}
     for k = 1, 100 do tx[k] = k / 100; ty[k] = U_series(k / 100) end
-    series[#series + 1] = { name = "Terzaghi U(T_v)", x = tx, y = ty, style = "dashed", color = "#222222" }
+    series[#series + 1] = { name = "Terzaghi U(T#dv#u)", x = tx, y = ty, style = "dashed", color = "#222222" }
     porelab.chart { file = "consolidation_U.png", title = "Consolidation of grain columns against Terzaghi",
-                    xlabel = "time factor T_v = c_v t / H^2", ylabel = "degree of consolidation U",
+                    xlabel = "time factor T#dv#u = c#dv#u t / H#u2#d", ylabel = "degree of consolidation U",
                     series = series, xrange = { 0, 1 }, yrange = { 0, 1.1 }, legend = "bottom right" }
     if world:time() >= T_END - 1e-6 then
       assert(not fail, fail)

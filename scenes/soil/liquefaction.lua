@@ -155,7 +155,8 @@ end
 
 local log = porelab.csv("ru.csv", { "t", "tank", "du_free", "sigma_v0_free", "ru_free", "ru_free_period_mean",
                                     "ru_layer_period_mean", "ru_under_period_mean", "building_y",
-                                    "building_tilt_deg", "pipe_y", "water_up_mm" })
+                                    "building_tilt_deg", "pipe_y", "water_up_mm" },
+                        { "s", "", "Pa", "Pa", "", "", "", "", "m", "deg", "m", "mm" })
 local placed, coupled, dense_done, ref_done, shaking = false, false, false, false, false
 local summary -- the results, filled by on_finish
 
@@ -163,26 +164,28 @@ return {
   world = w,
   run = { t_end = T_END, fps = 30 },
   render = {
-    size = { 1200, 420 }, camera = { -0.01, -0.005, 3 * WT + 2 * GAP + 0.01, 0.185 },
-    layers = "bodies,pressure,colorbar,title,time,overlay",
-    fluid_field = "excess_pressure", fluid_range = { 0, 900 },
-    colors = { sand = "#d9b36c8c", dense_sand = "#b08a4a8c", wall = "#555555", building = "#8c2d2d", pipe = "#2b6cb0" },
-    title = "Liquefaction on a shaking table: loose+water | loose dry | dense+water",
+    size = { 1280, 480 }, camera = { -0.01, -0.005, 3 * WT + 2 * GAP + 0.01, 0.185 },
+    layers = "bodies,pressure,colorbar,scalebar,title,time,overlay",
+    -- signed (the dense tank draws water in): diverging, symmetric, fixed for the whole video
+    fluid_field = "excess_pressure", fluid_range = { -900, 900 },
+    record_from = T_SHAKE - 0.3,   -- the sand's raining-in and the building's placing are not shown
+    colors = { sand = "#d9b36c8c", dense_sand = "#b08a4a8c", wall = "#555555", building = "#5b5b66", pipe = "#e6c229" },
+    title = "Liquefaction on a shaking table",
     overlay = function(world)
       local items = {}
       for k, t in ipairs(tanks) do
         local g = gauge(t, "free")
         items[#items + 1] = { polygon = { { g.lo[1], g.lo[2] }, { g.hi[1], g.lo[2] }, { g.hi[1], g.hi[2] },
                                           { g.lo[1], g.hi[2] } }, color = "#000000", width = 1 }
-        items[#items + 1] = { text = string.format("%s   r_u = %.2f", t.name, t.g and t.g.free.mean or 0),
-                              at = { t.x0 + WT / 2, 0.172 }, anchor = "center", size = 15 }
+        items[#items + 1] = { text = string.format("%s   r\u{1D64} = %.2f", t.name, t.g and t.g.free.mean or 0),
+                              at = { t.x0 + WT / 2, 0.172 }, anchor = "center", size = 17 }
         if t.wet then
           items[#items + 1] = { line = { { t.x0, HS }, { t.x0 + WT, HS } }, color = "#1f77b4", width = 1 }
         end
       end
       local tt = world:time()
       if tt >= T_SHAKE and tt <= T_STOP then
-        items[#items + 1] = { text = "SHAKING", at = { 20, 60 }, space = "pixel", size = 18, color = "#c00000" }
+        items[#items + 1] = { text = "shaking: 5 Hz, 0.35 g", at = { 24, 72 }, space = "pixel", size = 16, color = "#b00000" }
       end
       return items
     end,
@@ -307,12 +310,12 @@ return {
     end
     if #series > 0 then
       local t0, t1 = T_SHAKE + 1 / F, world:time()
-      series[#series + 1] = { name = "issue's criterion 0.9", x = { t0, t1 }, y = { 0.9, 0.9 }, style = "dashed",
+      series[#series + 1] = { name = "liquefied: r#du#d > 0.9", x = { t0, t1 }, y = { 0.9, 0.9 }, style = "dashed",
                               color = "#444444", width = 1 }
       series[#series + 1] = { name = "shaking stops", x = { T_STOP, T_STOP }, y = { -1.5, 1.5 }, style = "dashed",
                               color = "#c00000", width = 1 }
       porelab.chart { file = "ru.png", title = "Excess pore pressure ratio in the free field",
-                      xlabel = "time (s)", ylabel = "r_u = du / sigma'_v0 (mean over a period)",
+                      xlabel = "time (s)", ylabel = "r#du#d = #gDu / #gs'#dv0#u (mean over a period)",
                       series = series, legend = "bottom left" }
     end
     local fs, ss = world:fluid_stats(), world:soil_stats()

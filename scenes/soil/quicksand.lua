@@ -62,7 +62,8 @@ for i = 1, w:body_count() do
 end
 
 local log = porelab.csv("quicksand.csv", { "t", "level", "gradient", "i_c", "sigma_v_eff_mid", "u_excess_mid",
-                                           "expansion_mm", "block_settlement_mm" })
+                                           "expansion_mm", "block_settlement_mm" },
+                        { "s", "", "", "", "Pa", "Pa", "mm", "mm" })
 local st = { level = 0, placed = false }
 local function head_at(y)
   local s, n = 0, 0
@@ -84,15 +85,23 @@ return {
   world = w,
   run = { t_end = T_END, fps = 20 },
   render = {
-    size = { 500, 800 }, camera = { -0.005, -0.005, W + 0.005, 0.17 },
-    layers = "bodies,pressure,isolines,velocity,colorbar,title,time,overlay",
-    fluid_field = "excess_pressure",
-    colors = { sand = "#d9b36c", block = "#6b2f2f", wall = "#555555" },
+    size = { 560, 800 }, camera = { -0.005, -0.005, W + 0.005, 0.17 },
+    layers = "bodies,pressure,isolines,velocity,colorbar,scalebar,title,time,overlay",
+    -- excess pore pressure above the outlet's hydrostatic state (head H at the water surface):
+    -- zero in still open water; fixed range and arrow scale for the whole video (the largest
+    -- excess head is 1.3 i_c times the bed height, about 0.9 kPa; the Darcy velocity reaches
+    -- ~5 cm/s once the bed boils)
+    fluid_field = "excess_pressure", excess_reference = H, fluid_range = { 0, 1000 },
+    velocity_scale = 0.15,  -- m of arrow per m/s: 5 cm/s draws 7.5 mm
+    isolines = 8,
+    colors = { sand = "#d9b36c", block = "#5b5b66", wall = "#555555" },
     title = "Quicksand: upward seepage",
     overlay = function(world)
       if not st.i_c then return {} end
-      return { { text = string.format("i = %.2f   i_c = %.2f", st.i or 0, st.i_c), at = { 12, 60 }, space = "pixel",
-                 size = 17, color = (st.i or 0) >= st.i_c and "#c00000" or "#000000" } }
+      -- above the water surface, clear of the walls
+      return { { text = string.format("gradient i = %.2f (critical %.2f)", st.i or 0, st.i_c),
+                 at = { W / 2, 0.1655 }, anchor = "center", size = 16,
+                 color = (st.i or 0) >= st.i_c and "#b00000" or "#000000" } }
     end,
   },
   on_frame = function(world)

@@ -278,7 +278,8 @@ end
 for _, row in ipairs(rows) do
   row.csv = porelab.csv("simple_shear_" .. row.kind .. ".csv",
     { "t", "gamma", "tau_servo", "tau_cv", "tau_und", "sv_servo", "sv_cv", "sv_und", "dh_servo", "dh_und",
-      "u_top", "u_bottom", "u_lid", "drop_sv_cv", "tau_int_servo", "tau_int_cv", "tau_int_und" })
+      "u_top", "u_bottom", "u_lid", "drop_sv_cv", "tau_int_servo", "tau_int_cv", "tau_int_und" },
+    { "s", "", "Pa", "Pa", "Pa", "Pa", "Pa", "Pa", "", "", "Pa", "Pa", "Pa", "Pa", "Pa", "Pa", "Pa" })
   row.hist = {}
   row.sv0 = {}
   for _, col in ipairs(COLS) do row.sv0[col] = measure(row.box[col]).sv end
@@ -369,8 +370,25 @@ local function on_finish(world)
 end
 
 -- ------------------------------------------------------------------ drawing
-local W_PX, H_PX = 1500, 860
+local W_PX, H_PX = 1720, 860
 local CAM = { 0.999, 0.996, 1.099, 0.996 + 0.1 * H_PX / W_PX }
+-- round ticks (steps 1, 2, 2.5, 5 x 10^k), about five per axis, zero printed as 0
+local function nice_ticks(lo, hi)
+  local raw = (hi - lo) / 5
+  local p = 10 ^ math.floor(math.log(raw, 10))
+  local step = p
+  for _, m in ipairs { 1, 2, 2.5, 5, 10 } do
+    if m * p <= raw * 1.25 then step = m * p end
+  end
+  local out = {}
+  local v = math.ceil(lo / step - 1e-9) * step
+  while v <= hi + 1e-9 * step do
+    out[#out + 1] = math.abs(v) < 1e-9 * step and 0 or v
+    v = v + step
+  end
+  return out
+end
+
 local function panel(items, x0, y0, pw, ph, title, xlab, ylab, xr, yr, series)
   local function px(x, y)
     return { x0 + (x - xr[1]) / (xr[2] - xr[1]) * pw, y0 + ph - (y - yr[1]) / (yr[2] - yr[1]) * ph }
@@ -383,11 +401,15 @@ local function panel(items, x0, y0, pw, ph, title, xlab, ylab, xr, yr, series)
   items[#items + 1] = { text = title, at = { x0 + pw / 2, y0 - 10 }, anchor = "center", size = 14, space = "pixel" }
   items[#items + 1] = { text = xlab, at = { x0 + pw / 2, y0 + ph + 30 }, anchor = "center", size = 12, space = "pixel" }
   items[#items + 1] = { text = ylab, at = { x0 + 4, y0 + 12 }, anchor = "left", size = 12, space = "pixel" }
-  for _, v in ipairs { xr[1], (xr[1] + xr[2]) / 2, xr[2] } do
-    items[#items + 1] = { text = string.format("%g", v), at = { px(v, yr[1])[1], y0 + ph + 14 }, anchor = "center", size = 11, space = "pixel" }
+  for _, v in ipairs(nice_ticks(xr[1], xr[2])) do
+    local q = px(v, yr[1])
+    items[#items + 1] = { line = { { q[1], y0 + ph }, { q[1], y0 + ph + 4 } }, color = "#444444", width = 1, space = "pixel" }
+    items[#items + 1] = { text = string.format("%g", v), at = { q[1], y0 + ph + 16 }, anchor = "center", size = 12, space = "pixel" }
   end
-  for _, v in ipairs { yr[1], (yr[1] + yr[2]) / 2, yr[2] } do
-    items[#items + 1] = { text = string.format("%g", v), at = { x0 - 4, px(xr[1], v)[2] }, anchor = "right", size = 11, space = "pixel" }
+  for _, v in ipairs(nice_ticks(yr[1], yr[2])) do
+    local q = px(xr[1], v)
+    items[#items + 1] = { line = { { x0 - 4, q[2] }, { x0, q[2] } }, color = "#444444", width = 1, space = "pixel" }
+    items[#items + 1] = { text = string.format("%g", v), at = { x0 - 6, q[2] }, anchor = "right", size = 12, space = "pixel" }
   end
   local ly = y0 + 30
   for _, s in ipairs(series) do
@@ -411,8 +433,8 @@ local function overlay(world)
   local items = {}
   for _, row in ipairs(rows) do
     local b0 = row.box.servo
-    local label = row.kind == "monotonic" and "monotonic" or string.format("cyclic +-%.1f %%", 100 * GAMMA_CYC)
-    items[#items + 1] = { text = label, at = { 0.9995, row.oy + 12.5 * mm }, size = 15 }
+    local label = row.kind == "monotonic" and "monotonic shear" or string.format("cyclic shear, \u{00B1}%.1f %%", 100 * GAMMA_CYC)
+    items[#items + 1] = { text = label, at = { 0.9995, row.oy + 15.5 * mm }, size = 16 }
     for _, col in ipairs(COLS) do
       local b = row.box[col]
       local name = ({ servo = "dry, servo (drained)", cv = "dry, constant volume", und = "saturated, undrained" })[col]
@@ -421,13 +443,13 @@ local function overlay(world)
     local h = row.hist[#row.hist]
     if h then
       local b = row.box.und
-      items[#items + 1] = { text = string.format("du = %.0f kPa", (h.du) / 1e3), at = { b.ox + W0 / 2, row.oy + b.H + 4.2 * mm }, anchor = "center", size = 13, color = "#1f4e9c" }
-      items[#items + 1] = { text = string.format("sigma'v drop = %.0f kPa", h.drop / 1e3), at = { row.box.cv.ox + W0 / 2, row.oy + b.H + 4.2 * mm }, anchor = "center", size = 13, color = "#9b2226" }
+      items[#items + 1] = { text = string.format("\u{0394}u = %.0f kPa", (h.du) / 1e3), at = { b.ox + W0 / 2, row.oy + b.H + 4.2 * mm }, anchor = "center", size = 13, color = "#1f4e9c" }
+      items[#items + 1] = { text = string.format("\u{03C3}\u{2032}\u{1D65} drop = %.0f kPa", h.drop / 1e3), at = { row.box.cv.ox + W0 / 2, row.oy + b.H + 4.2 * mm }, anchor = "center", size = 13, color = "#9b2226" }
       items[#items + 1] = { text = string.format("height %+.2f %%", 100 * h.dh_servo), at = { b0.ox + W0 / 2, row.oy + b.H + 4.2 * mm }, anchor = "center", size = 13 }
     end
   end
   -- charts: per row, shear stress and (du, drop of sigma'_v) against shear strain
-  local x0, pw, ph = 790, 300, 300
+  local x0, pw, ph = 770, 300, 300
   for r, row in ipairs(rows) do
     local y0 = 60 + (r - 1) * 400
     local tauS, tauC, tauU, du, drop = {}, {}, {}, {}, {}
@@ -441,13 +463,13 @@ local function overlay(world)
       drop[#drop + 1] = { xc, h.drop / 1e3 }
     end
     local gx = row.kind == "monotonic" and { 0, 100 * GAMMA_MONO } or { -100 * GAMMA_CYC, 100 * GAMMA_CYC }
-    panel(items, x0, y0, pw, ph, row.kind .. ": shear stress (S1 + S3) / 2W", "shear strain (%)", "tau (kPa)", gx, { -150, 150 },
+    panel(items, x0, y0, pw, ph, row.kind .. ": shear stress on the walls", "shear strain \u{03B3} (%)", "\u{03C4} (kPa)", gx, { -150, 150 },
       { { name = "dry servo", color = "#777777", pts = tauS }, { name = "dry const. vol.", color = "#9b2226", pts = tauC },
         { name = "undrained", color = "#1f4e9c", pts = tauU } })
     local cyc = row.kind ~= "monotonic"
-    panel(items, x0 + pw + 90, y0, pw, ph, row.kind .. ": pore pressure", cyc and "cycles" or "shear strain (%)", "kPa",
+    panel(items, x0 + pw + 90, y0, pw, ph, row.kind .. ": pore pressure and effective stress", cyc and "cycles" or "shear strain \u{03B3} (%)", "kPa",
       cyc and { 0, CYCLES } or gx, cyc and { -200, 400 } or { -300, 900 },
-      { { name = "du undrained", color = "#1f4e9c", pts = du }, { name = "drop of sigma'v (CV)", color = "#9b2226", pts = drop, width = 1.5 } })
+      { { name = "\u{0394}u undrained", color = "#1f4e9c", pts = du }, { name = "drop of \u{03C3}\u{2032}\u{1D65} (const. vol.)", color = "#9b2226", pts = drop, width = 1.5 } })
   end
   return items
 end
@@ -459,11 +481,12 @@ return {
   run = { t_end = T0 + T_END + 0.5 / FPS, fps = FPS },
   render = {
     size = { W_PX, H_PX }, camera = CAM,
-    layers = "bodies,forces,pressure,title,time,overlay",
+    layers = "bodies,forces,pressure,colorbar,scalebar,title,time,overlay",
     colors = { grain = "#c9b48a", wall = "#2f2f2f", lid = "#2f2f2f", ghost = "#6d6d6d" },
+    hide = { "ghost" },  -- the slabs that confine the fluid mesh are numerical, not apparatus
     force_color = "#9b2226", force_max_width = 5,
     fluid_field = "pressure", fluid_range = { U_BACK - 300e3, U_BACK + 900e3 },
-    title = "Simple shear of the 20-disc samples of seed 003: dry servo, dry constant volume, undrained",
+    title = "Simple shear of 20-disc samples (Tan 1990): dry drained, dry constant volume, undrained",
     overlay = overlay,
   },
   on_frame = on_frame,

@@ -105,7 +105,7 @@ pl_cli_test(imperative_assert_fails RC 1 ARGS run ${PL_BAD}/failing_assert.lua -
 pl_cli_test(imperative_csv RC 0
   ARGS run scenes/examples/imperative.lua --out ${PL_CLI_OUT}/imperative
   MATCH "ran to completion"
-  EXPECT_FILE ${PL_CLI_OUT}/imperative/bounce.csv FILE_MATCH "^t,y,vy,contacts\n[0-9]")
+  EXPECT_FILE ${PL_CLI_OUT}/imperative/bounce.csv FILE_MATCH "^# porelab [0-9.]+, scene [^\n]*, written [0-9T:Z-]+\nt,y,vy,contacts\n[0-9]")
 
 # Determinism: same scene twice, same state hash (and a different one a step later).
 add_test(NAME cli_determinism COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
@@ -124,7 +124,7 @@ pl_cli_test(run_flags_defaults RC 0 ARGS info scenes/five_discs.lua
   MATCH2 "frames +51, one every 100 steps \\(from flag PRINT_INT\\)")
 pl_cli_test(run_hook_csv RC 0
   ARGS run scenes/disc_on_plate.lua --until 0.5 --quiet --out ${PL_CLI_OUT}/plate
-  EXPECT_FILE ${PL_CLI_OUT}/plate/contact_force.csv FILE_MATCH "^t,fn\n0,0\n0.05,")
+  EXPECT_FILE ${PL_CLI_OUT}/plate/contact_force.csv FILE_MATCH "^# porelab [^\n]*state hash [0-9a-f]+ at t = 0 s[^\n]*\nt \\(s\\),fn \\(N\\)\n0,0\n0.05,")
 pl_cli_test(run_hash RC 0 ARGS run scenes/two_disc_impact.lua --steps 10 --quiet --hash
   --out ${PL_CLI_OUT}/hash
   MATCH "\nstate-hash: [0-9a-f]+\n$")
@@ -157,11 +157,16 @@ pl_cli_test(unknown_option RC 2 ARGS run scenes/demo.lua --fast
 pl_cli_test(unknown_command RC 2 ARGS simulate scenes/demo.lua
   MATCH "unknown command 'simulate'; valid commands: run still info flags")
 
-# VTK series for ParaView: one .vtu per frame and a .pvd index listing them.
+# VTK series for ParaView: one .vtu per frame and part, one run.pvd listing them all; bodies
+# carry their radius and material name.
 pl_cli_test(run_vtk RC 0
   ARGS run scenes/five_discs.lua --steps 20 --every 10 --quiet --vtk --out ${PL_CLI_OUT}/vtk
-  EXPECT_FILE ${PL_CLI_OUT}/vtk/bodies.pvd
-  FILE_MATCH "frame_000000_bodies.vtu.*frame_000001_bodies.vtu.*frame_000002_bodies.vtu")
+  EXPECT_FILE ${PL_CLI_OUT}/vtk/run.pvd
+  FILE_MATCH "part=\"0\" name=\"bodies\" file=\"vtk/frame_000000_bodies.vtu.*part=\"1\" name=\"contacts\" file=\"vtk/frame_000000_contacts.vtu.*frame_000002_bodies.vtu")
+pl_cli_test(run_vtk_bodies RC 0
+  ARGS run scenes/five_discs.lua --steps 20 --every 10 --quiet --vtk --out ${PL_CLI_OUT}/vtk_bodies
+  EXPECT_FILE ${PL_CLI_OUT}/vtk_bodies/vtk/frame_000000_bodies.vtu
+  FILE_MATCH "Name=\"radius\" format=\"ascii\">\n[0-9.e+-]+\n.*Name=\"material_name\" format=\"ascii\">\n114 111 99 107 0\n")
 
 # Boundary motions and diagnostics from Lua: bad ranges name the argument.
 pl_cli_test(bad_shake_frequency RC 1 ARGS run ${PL_BAD}/bad_shake.lua --quiet
@@ -375,3 +380,8 @@ pl_cli_test(bad_unstable_line RC 1 ARGS run ${PL_BAD}/unstable.lua --quiet --out
 pl_cli_test(bad_coincident RC 1 ARGS run ${PL_BAD}/coincident.lua --steps 10 --quiet --out ${PL_CLI_OUT}/coincident
   MATCH "^porelab: tests/cli/bad/coincident.lua:7: run stopped at t = 0 s \\(step 0 of 10\\): bodies piled on top of each other: body 1 \\(disc, radius 0.01 m, at \\(0, 0\\)\\) has more than 64 bodies .*20000 bodies have their centre in the 0.01 m square")
 include(${CMAKE_CURRENT_LIST_DIR}/sweep/tests.cmake)
+# Every command of the ```sh quick blocks of README.md and docs/*.md runs as written (with the
+# built porelab on PATH, in a scratch copy of the layout; tests/cli/docs_commands.sh).
+add_test(NAME docs_commands COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/docs_commands.sh
+         ${CMAKE_SOURCE_DIR} $<TARGET_FILE_DIR:porelab> ${PL_CLI_OUT}/docs_commands)
+set_tests_properties(docs_commands PROPERTIES LABELS cli TIMEOUT 300)

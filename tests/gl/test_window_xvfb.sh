@@ -18,6 +18,7 @@
 #   test_window_xvfb.sh PORELAB GL_PSNR GL_XCAPTURE SOURCE_DIR OUT_DIR
 set -u
 unset PORELAB_GL_SAMPLES PORELAB_WINDOW_SAMPLES # the goldens and thresholds are for the defaults
+export PORELAB_WINDOW_DEBUG=1 # the window prints its camera with each screenshot (for clicks)
 P=$1; PSNR=$2; CAP=$3; SRC=$4; OUT=$5
 rm -rf "$OUT"; mkdir -p "$OUT"
 XPID=""; VPID=""
@@ -197,6 +198,43 @@ key r p; wait_shots 20
   --out "$OUT/h" -q || fail "headless still at 0"
 q=$("$PSNR" "$OUT/v/screenshot_019.png" "$OUT/headless_0.png" 40) || fail "restart vs headless at 0 ($q dB)"
 echo "keys: space played t = $T0 -> $T1 s; - and + halve and double the steps per frame; 3, c, f, [ change the picture; pan and z; help drawn; r restarts ($q dB vs headless)"
+
+# 8. the control panel: outside the scene's area, and its controls work with the mouse.
+#    The panel is the right strip of width P = clamp(W / 4, 220, 320) = 220 px at 640 px. With
+#    the HUD on (i), the window's pixels left of the panel equal the screenshot (the scene
+#    without any HUD), the cursor over the scene: no HUD pixel lies in the scene's area.
+PX0=420
+key i
+xdotool mousemove --window "$W" 200 200; sleep 0.2
+key p; wait_shots 21
+"$CAP" "$W" "$OUT/window_panel.png" || fail "capture with the panel"
+q=$("$PSNR" "$OUT/window_panel.png" "$OUT/v/screenshot_020.png" 60 0 0 $PX0 480) ||
+  fail "a HUD pixel inside the scene's area ($q dB over x < $PX0)"
+if q2=$("$PSNR" "$OUT/window_panel.png" "$OUT/v/screenshot_020.png" 60); then
+  fail "the control panel is not drawn ($q2 dB over the whole window)"; fi
+# the "one step" button (second of the first row: x from 430 + 102 to 630, y 8 .. 30)
+t_a=$(shot_time 21)
+xdotool mousemove --window "$W" 580 19 click 1; sleep 0.3
+key p; wait_shots 22
+t_b=$(shot_time 22)
+[ "$t_a" != "$t_b" ] || fail "the one-step button did not step (t = $t_a s)"
+# the play button (x 430 .. 528) plays, a second click pauses
+xdotool mousemove --window "$W" 470 19 click 1; sleep 0.6
+xdotool mousemove --window "$W" 470 19 click 1; sleep 0.2
+key p; wait_shots 23
+t_c=$(shot_time 23)
+awk -v a="$t_b" -v b="$t_c" 'BEGIN { exit !(b > a) }' || fail "the play button did not play ($t_b -> $t_c s)"
+# the first layer box ("grains and bodies") hides the bodies; a second click shows them
+xdotool mousemove --window "$W" 436 118 click 1; sleep 0.3
+key p; wait_shots 24
+if q3=$("$PSNR" "$OUT/v/screenshot_023.png" "$OUT/v/screenshot_022.png" 60); then
+  fail "the bodies toggle changed nothing ($q3 dB)"; fi
+xdotool mousemove --window "$W" 436 118 click 1; sleep 0.2
+# the restart button: back to t = 0
+xdotool mousemove --window "$W" 470 46 click 1; sleep 0.3
+key p; wait_shots 25
+[ "$(shot_time 25)" = 0 ] || fail "the restart button did not restart ($(shot_time 25) s)"
+echo "panel: no HUD pixel in the scene's area ($q dB), panel drawn; step ($t_a -> $t_b s), play ($t_b -> $t_c s), layer toggle, restart work by mouse"
 
 key q
 i=0; while kill -0 "$VPID" 2>/dev/null && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done

@@ -11,6 +11,7 @@
 #include "harness.h"
 #include "backend_cairo.h"
 #include "charts.h"
+#include "drawlist.h"
 #include "image_compare.h"
 #include "render_scenes.h"
 
@@ -28,6 +29,24 @@ static int starts_with(const char *path, const char *magic) {
     return n >= strlen(magic) && memcmp(buf, magic, strlen(magic)) == 0;
 }
 
+/* 1 when the file contains the byte string (binary-safe). */
+static int file_contains(const char *path, const char *needle) {
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    int found = 0;
+    if (buf && fread(buf, 1, (size_t)n, f) == (size_t)n) {
+        size_t k = strlen(needle);
+        for (long i = 0; i + (long)k <= n && !found; i++) found = memcmp(buf + i, needle, k) == 0;
+    }
+    free(buf);
+    fclose(f);
+    return found;
+}
+
 static int test_stills_three_formats(void) {
     pl_world *w = make_pile_world();
     ENSURE(w != NULL);
@@ -40,6 +59,15 @@ static int test_stills_three_formats(void) {
     ENSURE(starts_with(PL_RENDER_OUT_DIR "/still.png", "\x89PNG"));
     ENSURE(starts_with(PL_RENDER_OUT_DIR "/still.svg", "<?xml"));
     ENSURE(starts_with(PL_RENDER_OUT_DIR "/still.pdf", "%PDF-"));
+    /* real text: <text> elements in the SVG (its words readable in the file), an embedded
+     * TrueType font with a Unicode map in the PDF */
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.svg", "<text "));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.svg", ">t = 0.000 s</text>") ||
+           file_contains(PL_RENDER_OUT_DIR "/still.svg", "> s</text>"));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.svg", "font-family=\"DejaVu Sans\""));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.pdf", "/FontFile"));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.pdf", "/ToUnicode"));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/still.pdf", "DejaVuSans"));
     pl_image img = {0, 0, NULL};
     ENSURE(pl_png_read(PL_RENDER_OUT_DIR "/still.png", &img, err, sizeof err) == 0);
     ENSURE(img.width == 800 && img.height == 600);
@@ -98,6 +126,95 @@ static int test_frame_writer(void) {
     ENSURE(pl_frame_writer_open(dir, PL_RENDER_OUT_DIR "/x.avi", 10, err, sizeof err) == NULL);
     ENSURE(strstr(err, ".mp4") && strstr(err, ".gif"));
     ENSURE(pl_frame_writer_open(dir, NULL, 0, err, sizeof err) == NULL);
+    return 0;
+}
+
+
+/* A rerun into a folder that holds more frames of an earlier run leaves none of them: the
+ * summary's frame count is the folder's. */
+static int test_stale_frames_removed(void) {
+    char err[512];
+    const char *dir = PL_RENDER_OUT_DIR "/frames/stale";
+    ENSURE(run_frames(dir, NULL, 5, err, sizeof err) == 0);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/stale/frame_000004.png") > 1000);
+    /* something that only looks like a frame stays */
+    FILE *f = fopen(PL_RENDER_OUT_DIR "/frames/stale/frame_000009.png.keep", "w");
+    ENSURE(f != NULL);
+    fclose(f);
+    ENSURE(run_frames(dir, NULL, 2, err, sizeof err) == 0);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/stale/frame_000001.png") > 1000);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/stale/frame_000002.png") < 0);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/stale/frame_000004.png") < 0);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/stale/frame_000009.png.keep") == 0);
+    /* a resumed run (numbering from 3) keeps the frames before it */
+    ENSURE(run_frames(dir, NULL, 4, err, sizeof err) == 0);
+    ENSURE(pl_frames_remove_stale(dir, 2, NULL) == 2);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/stale/frame_000001.png") > 1000);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/stale/frame_000002.png") < 0);
+    return 0;
+}
+
+/* render.record_from: frames before it are not written, numbering starts at the first one
+ * written. */
+static int test_record_from(void) {
+    char err[512];
+    pl_world *w = make_moving_world();
+    ENSURE(w != NULL);
+    pl_render_options o = pl_default_render_options();
+    o.width = 160;
+    o.height = 120;
+    double dt = pl_world_dt(w);
+    o.record_from = pl_world_time(w) + 25.5 * dt;
+    const char *dir = PL_RENDER_OUT_DIR "/frames/record_from";
+    pl_frame_writer *fw = pl_frame_writer_open(dir, NULL, 10, err, sizeof err);
+    ENSURE(fw != NULL);
+    for (int i = 0; i < 6; i++) { /* frames at 0, 10, ..., 50 steps: 30, 40, 50 written */
+        ENSURE(pl_frame_writer_add(fw, w, &o, err, sizeof err) == 0);
+        ENSURE(pl_world_step(w, 10) == PL_OK);
+    }
+    ENSURE(pl_frame_writer_count(fw) == 3);
+    ENSURE(pl_frame_writer_close(&fw, err, sizeof err) == 0);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/record_from/frame_000002.png") > 100);
+    ENSURE(file_size(PL_RENDER_OUT_DIR "/frames/record_from/frame_000003.png") < 0);
+    pl_world_destroy(&w);
+    return 0;
+}
+
+/* Ranges are fixed across a run: the automatic range of each frame widens the run's, never
+ * narrows it, and the next frame is drawn with the run's; the arrow scale only shrinks. */
+static int test_fixed_ranges(void) {
+    pl_render_ranges r;
+    memset(&r, 0, sizeof r);
+    pl_draw_list dl;
+    pl_draw_list_init(&dl);
+    pl_render_options o = pl_default_render_options(), fixed;
+    dl.auto_field_set = 1;
+    dl.auto_field_lo = 0.0;
+    dl.auto_field_hi = 400.0;
+    dl.auto_vscale = 2.0;
+    pl_render_ranges_update(&r, &dl);
+    pl_render_ranges_apply(&r, &o, &fixed);
+    ENSURE(fixed.fluid_min == 0.0 && fixed.fluid_max == 400.0 && fixed.velocity_scale == 2.0);
+    ENSURE(!r.field_changed && !r.vscale_changed);
+    dl.auto_field_hi = 100.0; /* a quieter frame: the range stays */
+    dl.auto_vscale = 5.0;
+    pl_render_ranges_update(&r, &dl);
+    pl_render_ranges_apply(&r, &o, &fixed);
+    ENSURE(fixed.fluid_max == 400.0 && fixed.velocity_scale == 2.0 && !r.field_changed);
+    dl.auto_field_lo = -50.0; /* a wider one widens it, and it is reported */
+    dl.auto_field_hi = 900.0;
+    dl.auto_vscale = 1.0;
+    pl_render_ranges_update(&r, &dl);
+    pl_render_ranges_apply(&r, &o, &fixed);
+    ENSURE(fixed.fluid_min == -50.0 && fixed.fluid_max == 900.0 && fixed.velocity_scale == 1.0);
+    ENSURE(r.field_changed && r.vscale_changed);
+    /* a scene's own range always wins */
+    o.fluid_min = 0.0;
+    o.fluid_max = 300.0;
+    o.velocity_scale = 7.0;
+    pl_render_ranges_apply(&r, &o, &fixed);
+    ENSURE(fixed.fluid_max == 300.0 && fixed.velocity_scale == 7.0);
+    pl_draw_list_free(&dl);
     return 0;
 }
 
@@ -219,6 +336,9 @@ int main(int argc, char **argv) {
     }
     RUN(test_stills_three_formats);
     RUN(test_frame_writer);
+    RUN(test_stale_frames_removed);
+    RUN(test_record_from);
+    RUN(test_fixed_ranges);
     RUN(test_video);
     RUN(test_video_without_ffmpeg);
     RUN(test_chart);

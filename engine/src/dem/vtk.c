@@ -55,6 +55,17 @@ static pl_status write_bodies(const pl_world *w, const char *path) {
     for (int i = 0; i < w->n; i++) pl_out_printf(f, "%d\n", w->material[i]);
     pl_out_printf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"id\" format=\"ascii\">\n");
     for (int i = 0; i < w->n; i++) pl_out_printf(f, "%d\n", i);
+    /* disc radius (polygons and segments: bounding radius about the centroid), m */
+    pl_out_printf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n");
+    for (int i = 0; i < w->n; i++) pl_out_printf(f, "%.9g\n", w->radius[i]);
+    /* material names: a VTK string array (ASCII: each string's byte codes, then 0) */
+    pl_out_printf(f, "</DataArray>\n<DataArray type=\"String\" Name=\"material_name\" format=\"ascii\">\n");
+    for (int i = 0; i < w->n; i++) {
+        const int m = w->material[i];
+        const char *nm = m >= 0 && m < w->material_count ? w->materials[m].name : "";
+        for (const unsigned char *c = (const unsigned char *)nm; *c; c++) pl_out_printf(f, "%u ", (unsigned)*c);
+        pl_out_printf(f, "0\n");
+    }
     pl_out_printf(f, "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
     char msg[1024];
     const pl_status st = pl_out_write(f, &w->writer, path, 0, msg, sizeof msg);

@@ -45,7 +45,7 @@ while [ "$i" -lt "$iter" ]; do
     if [ ! -s "$f" ]; then bad "kill $i at ${ms} ms: $f is empty"; continue; fi
     last=$(tail -c 1 "$f" | od -An -tx1 | tr -d ' \n')
     [ "$last" = "0a" ] || bad "kill $i at ${ms} ms: $f ends mid-line ($(wc -c < "$f") bytes)"
-    awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad }' "$f" ||
+    awk -F, '/^#/ { next } !n { n = NF } NF != n { bad = 1 } END { exit bad }' "$f" ||
       bad "kill $i at ${ms} ms: $f has a line with a wrong number of fields"
   done
   echo "kill $i at ${ms} ms: $pngs PNG, $csvs CSV checked"
