@@ -35,7 +35,7 @@ static int sorted_find(const size_t *keys, size_t n, size_t key) {
 int ns_mesh_domain(const ns_domain *d, ns_mesh *out, char *msg, size_t msg_size) {
     int ierr = 0, ok = -1;
     memset(out, 0, sizeof *out);
-    if (!(d->x1 > d->x0 && d->y1 > d->y0 && d->h_far > 0 && (d->nholes == 0 || d->h_near > 0))) {
+    if (!(d->x1 > d->x0 && d->y1 > d->y0 && d->h_far > 0 && ((d->nholes == 0 && !d->refine_corners) || d->h_near > 0))) {
         snprintf(msg, msg_size, "mesh domain: need x1 > x0, y1 > y0, h_far > 0 and h_near > 0");
         return -1;
     }
@@ -66,7 +66,7 @@ int ns_mesh_domain(const ns_domain *d, ns_mesh *out, char *msg, size_t msg_size)
     gmshOptionSetNumber("Mesh.MaxNumThreads2D", 1, &ierr);
     gmshOptionSetNumber("Mesh.Algorithm", 6, &ierr); /* Frontal-Delaunay */
     gmshOptionSetNumber("Mesh.RandomFactor", 1e-9, &ierr);
-    gmshOptionSetNumber("Mesh.MeshSizeExtendFromBoundary", d->nholes ? 0 : 1, &ierr);
+    gmshOptionSetNumber("Mesh.MeshSizeExtendFromBoundary", d->nholes || d->refine_corners ? 0 : 1, &ierr);
     gmshOptionSetNumber("Mesh.MeshSizeFromCurvature", 0, &ierr);
     gmshOptionSetNumber("Mesh.MeshSizeFromPoints", 1, &ierr);
     gmshOptionSetNumber("Mesh.ElementOrder", 1, &ierr);
@@ -112,15 +112,29 @@ int ns_mesh_domain(const ns_domain *d, ns_mesh *out, char *msg, size_t msg_size)
     GCHK("plane surface");
     gmshModelGeoSynchronize(&ierr);
     GCHK("synchronize");
-    if (d->nholes > 0) {
+    if (d->nholes > 0 || d->refine_corners) {
         const int fd = gmshModelMeshFieldAdd("Distance", -1, &ierr);
         GCHK("distance field");
-        gmshModelMeshFieldSetNumbers(fd, "CurvesList", hole_curves, (size_t)nhc, &ierr);
-        if (ierr) {
-            ierr = 0;
-            gmshModelMeshFieldSetNumbers(fd, "EdgesList", hole_curves, (size_t)nhc, &ierr);
+        if (nhc > 0) {
+            gmshModelMeshFieldSetNumbers(fd, "CurvesList", hole_curves, (size_t)nhc, &ierr);
+            if (ierr) {
+                ierr = 0;
+                gmshModelMeshFieldSetNumbers(fd, "EdgesList", hole_curves, (size_t)nhc, &ierr);
+            }
+            GCHK("distance curves");
         }
-        GCHK("distance curves");
+        if (d->refine_corners) {
+            double rp[4];
+            int nr = 0;
+            for (int i = 0; i < 4; i++)
+                if (d->refine_corners & (1 << i)) rp[nr++] = pts[i];
+            gmshModelMeshFieldSetNumbers(fd, "PointsList", rp, (size_t)nr, &ierr);
+            if (ierr) {
+                ierr = 0;
+                gmshModelMeshFieldSetNumbers(fd, "NodesList", rp, (size_t)nr, &ierr);
+            }
+            GCHK("distance points");
+        }
         gmshModelMeshFieldSetNumber(fd, "NumPointsPerCurve", 20, &ierr);
         ierr = 0; /* named Sampling in later gmsh: the default sampling is fine too */
         const int ft = gmshModelMeshFieldAdd("Threshold", -1, &ierr);

@@ -96,8 +96,8 @@ typedef struct ns_mesh {
 } ns_mesh;
 
 void ns_mesh_free(ns_mesh *m);
-/* Builds edges (edge, tri_edge, edge_tri) from tri; boundary edges get the tag from tagfn, or
-   NS_TAG_UNSET when tagfn is NULL. Orients every triangle counter-clockwise. 0 ok, -1 no mem. */
+/* Orients every triangle counter-clockwise and builds the edges (edge sorted by vertex pair,
+   tri_edge, edge_tri; edge_tag zeroed). 0 ok, -1 out of memory. */
 int ns_mesh_build_edges(ns_mesh *m);
 /* Minimum interior angle of all triangles, degrees. */
 double ns_mesh_min_angle(const ns_mesh *m);
@@ -116,8 +116,8 @@ typedef struct ns_domain {
     int nholes;
     const int32_t *hole_offset;   /* nholes + 1 offsets into hole_xy (vertex index) */
     const double *hole_xy;        /* 2 * total vertices */
-    double hole_h_max;            /* > 0: split hole edges longer than this (gmsh meshes each
-                                     polygon side with h_near anyway) */
+    int refine_corners;           /* box corners that also get h_near around them: bit 0
+                                     bottom-left, 1 bottom-right, 2 top-right, 3 top-left */
 } ns_domain;
 
 #define NS_TAG_BOTTOM 1
