@@ -8,3 +8,6 @@ pl_add_c_test(test_ns_flow SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_flow.c L
 pl_add_c_test(test_ns_validation SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_validation.c LABEL "navier_stokes;physics" TIMEOUT 120)
 add_test(NAME test_ns_validation_long COMMAND test_ns_validation long)
 set_tests_properties(test_ns_validation_long PROPERTIES LABELS "navier_stokes;physics;long" TIMEOUT 900)
+pl_add_c_test(test_ns_world SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_world.c LABEL "navier_stokes;physics" TIMEOUT 120)
+add_test(NAME test_ns_world_long COMMAND test_ns_world long)
+set_tests_properties(test_ns_world_long PROPERTIES LABELS "navier_stokes;physics;long" TIMEOUT 900)

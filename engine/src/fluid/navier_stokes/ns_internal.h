@@ -211,6 +211,11 @@ int ns_system_eval(const ns_system *s, double x, double y, int hint, double *u, 
 /* L2 norm of div u over the domain, and the flux ∫ u . n across the segment (ax,ay)-(bx,by)
    (n = left normal of b - a), sampled by npts midpoint samples. */
 double ns_system_div_l2(const ns_system *s);
+/* Triangle containing (x, y) (walk from hint, then a scan), barycentric l1, l2; -1 outside. */
+int ns_system_locate(const ns_system *s, double x, double y, int hint, double *l1, double *l2);
+/* Velocity and kinematic pressure of the unknown vector X (x, x1 or x2) in triangle t. */
+void ns_system_point(const ns_system *s, const double *X, int t, double l1, double l2, double *u, double *v,
+                     double *q);
 double ns_system_flux(const ns_system *s, double ax, double ay, double bx, double by, int npts);
 
 #endif

@@ -340,8 +340,8 @@ void ns_system_push_history(ns_system *s, double tau) {
 }
 
 /* velocity gradient and pressure of triangle t at barycentric (l1, l2) */
-static void point_state(const ns_system *s, int t, double l1, double l2, double *u, double *v, double *q,
-                        double grad[4]) {
+static void point_state_vec(const ns_system *s, const double *X, int t, double l1, double l2, double *u, double *v,
+                            double *q, double grad[4]) {
     const ns_mesh *M = &s->mesh;
     const int nl = s->nloc;
     double x[3], y[3], qv[3];
@@ -349,14 +349,14 @@ static void point_state(const ns_system *s, int t, double l1, double l2, double 
         const int32_t k = M->tri[3 * t + i];
         x[i] = M->xy[2 * k];
         y[i] = M->xy[2 * k + 1];
-        qv[i] = s->x[2 * s->nvel + k];
+        qv[i] = X[2 * s->nvel + k];
     }
     double phi[NS_MAXV], gx[NS_MAXV], gy[NS_MAXV];
     ns_elem_basis(s->kind, x, y, l1, l2, phi, gx, gy);
     double uu = 0, vv = 0, g0 = 0, g1 = 0, g2 = 0, g3 = 0;
     for (int i = 0; i < nl; i++) {
         const int32_t j = s->eldof[(size_t)t * nl + i];
-        const double a = s->x[j], b = s->x[s->nvel + j];
+        const double a = X[j], b = X[s->nvel + j];
         uu += a * phi[i];
         vv += b * phi[i];
         g0 += a * gx[i];
@@ -373,6 +373,16 @@ static void point_state(const ns_system *s, int t, double l1, double l2, double 
         grad[2] = g2;
         grad[3] = g3;
     }
+}
+
+static void point_state(const ns_system *s, int t, double l1, double l2, double *u, double *v, double *q,
+                        double grad[4]) {
+    point_state_vec(s, s->x, t, l1, l2, u, v, q, grad);
+}
+
+void ns_system_point(const ns_system *s, const double *X, int t, double l1, double l2, double *u, double *v,
+                     double *q) {
+    point_state_vec(s, X, t, l1, l2, u, v, q, NULL);
 }
 
 void ns_system_force_line(const ns_system *s, int tag, double rho, double cx, double cy, double *fx, double *fy,
@@ -427,34 +437,57 @@ void ns_system_force_react(ns_system *s, double tau, int tag, double rho, double
     if (moment) *moment = Mz;
 }
 
-static int in_tri(const ns_mesh *M, int t, double x, double y, double *l1, double *l2) {
+/* barycentric coordinates of (x, y) in triangle t */
+static void bary(const ns_mesh *M, int t, double x, double y, double l[3]) {
     const int32_t *v = M->tri + 3 * t;
     const double x0 = M->xy[2 * v[0]], y0 = M->xy[2 * v[0] + 1];
     const double ax = M->xy[2 * v[1]] - x0, ay = M->xy[2 * v[1] + 1] - y0;
     const double bx = M->xy[2 * v[2]] - x0, by = M->xy[2 * v[2] + 1] - y0;
     const double det = ax * by - ay * bx;
-    const double a = ((x - x0) * by - (y - y0) * bx) / det, b = (ax * (y - y0) - ay * (x - x0)) / det;
-    const double eps = -1e-12;
-    if (a >= eps && b >= eps && a + b <= 1.0 - eps) {
-        *l1 = a;
-        *l2 = b;
-        return 1;
-    }
-    return 0;
+    l[1] = ((x - x0) * by - (y - y0) * bx) / det;
+    l[2] = (ax * (y - y0) - ay * (x - x0)) / det;
+    l[0] = 1.0 - l[1] - l[2];
 }
 
-int ns_system_eval(const ns_system *s, double x, double y, int hint, double *u, double *v, double *q) {
+int ns_system_locate(const ns_system *s, double x, double y, int hint, double *l1, double *l2) {
     const ns_mesh *M = &s->mesh;
+    const double eps = -1e-12;
+    double l[3];
     if (hint < 0 || hint >= M->nt) hint = 0;
-    double l1, l2;
+    /* walk across the edge facing the point; a hole or the boundary ends the walk */
+    int t = hint;
     for (int k = 0; k < M->nt; k++) {
-        const int t = (hint + k) % M->nt;
-        if (in_tri(M, t, x, y, &l1, &l2)) {
-            point_state(s, t, l1, l2, u, v, q, NULL);
+        bary(M, t, x, y, l);
+        int worst = 0;
+        for (int i = 1; i < 3; i++)
+            if (l[i] < l[worst]) worst = i;
+        if (l[worst] >= eps) {
+            *l1 = l[1];
+            *l2 = l[2];
             return t;
+        }
+        /* the edge opposite vertex `worst` joins vertices worst+1 and worst+2: local edge (worst+1)%3 */
+        const int e = M->tri_edge[3 * t + (worst + 1) % 3];
+        const int nb = M->edge_tri[2 * e] == t ? M->edge_tri[2 * e + 1] : M->edge_tri[2 * e];
+        if (nb < 0) break;
+        t = nb;
+    }
+    for (int k = 0; k < M->nt; k++) {
+        bary(M, k, x, y, l);
+        if (l[0] >= eps && l[1] >= eps && l[2] >= eps) {
+            *l1 = l[1];
+            *l2 = l[2];
+            return k;
         }
     }
     return -1;
+}
+
+int ns_system_eval(const ns_system *s, double x, double y, int hint, double *u, double *v, double *q) {
+    double l1, l2;
+    const int t = ns_system_locate(s, x, y, hint, &l1, &l2);
+    if (t >= 0) point_state(s, t, l1, l2, u, v, q, NULL);
+    return t;
 }
 
 double ns_system_div_l2(const ns_system *s) {

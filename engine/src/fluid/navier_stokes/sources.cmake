@@ -4,4 +4,6 @@ list(APPEND PL_ENGINE_SOURCES
   src/fluid/navier_stokes/ns_element.c
   src/fluid/navier_stokes/ns_mesh.c
   src/fluid/navier_stokes/ns_gmsh.c
-  src/fluid/navier_stokes/ns_system.c)
+  src/fluid/navier_stokes/ns_system.c
+  src/fluid/navier_stokes/ns_params.c
+  src/fluid/navier_stokes/navier_stokes.c)
