@@ -70,10 +70,10 @@ static int test_settling_faxen(void) {
     pl_ns_stats st;
     pl_world_navier_stokes_stats(w, &st);
     printf("settling disc r=%.3f m between walls 2b=%.2f m, mu=50 Pa s: v = %.6f m/s (previous step %.6f), "
-           "Faxen terminal %.6f m/s (%.2f %%), Re = %.3f; %ld fluid steps, %ld meshes, %d unknowns, "
-           "CPU mesh %.2f interp %.2f assembly %.2f factor %.2f solve %.2f forces %.3f s\n",
+           "Faxen terminal %.6f m/s (%.2f %%), Re = %.3f; %ld fluid steps, %ld meshes, %ld relocations, "
+           "%d unknowns, min angle %.1f deg, CPU mesh %.2f relocate %.2f interp %.2f assembly %.2f factor %.2f solve %.2f forces %.3f s\n",
            R, 2 * B, -v[0].y, -vprev, U, 100 * (-v[0].y / U - 1), 1000 * U * R / MU, st.fluid_steps, st.remeshes,
-           st.unknowns, st.t_mesh, st.t_interp, st.t_assembly, st.t_factor, st.t_solve, st.t_forces);
+           st.relocations, st.unknowns, st.min_angle, st.t_mesh, st.t_relocate, st.t_interp, st.t_assembly, st.t_factor, st.t_solve, st.t_forces);
     pl_validation("fluid.ns_settling", "Navier-Stokes model: disc settling between walls (Stokes limit), k=0.125",
                   "Faxen drag = buoyant weight", "3 %", "v = %.5f m/s vs %.5f (%.2f %%)", -v[0].y, U,
                   100 * (-v[0].y / U - 1));

@@ -18,8 +18,10 @@
 ///
 /// Coupling (seed §5): every solve_every grain steps the model predicts each core's position at
 /// the end of the fluid step (x + v tau, angle + omega tau), meshes the pore space around the
-/// predicted cores (a full gmsh remesh whenever a core moved; the previous solution and the BDF2
-/// history are interpolated onto the new nodes), prescribes the cores' rigid-body velocities
+/// predicted cores (the mesh nodes follow the cores, the interior relaxed by Laplacian smoothing
+/// of the displacement, while the smallest angle stays above remesh_angle; otherwise, or when
+/// the set of cores changes, a full gmsh remesh; the previous solution and the BDF2 history are
+/// interpolated onto the new nodes), prescribes the cores' rigid-body velocities
 /// (no slip), solves, and integrates the stress over each core outline (eq. 21, with the
 /// pressure rho q of the kinematic pressure q the solver uses) into the force and moment on the
 /// grain, which the world applies over the following solve_every steps.
@@ -66,11 +68,14 @@ typedef struct pl_navier_stokes_def {
     double newton_tol;     ///< Newton stops when max |correction| <= tol (1 + max |unknown|); default 1e-8
     double force_relaxation; ///< beta: the load applied is (1 - beta) previous + beta new (stabilises the
                            ///< explicit coupling against the added-mass instability); 1 = none. Default 0.5
+    double remesh_angle;   ///< degrees: mesh nodes follow the cores (relaxation) while the smallest angle stays
+                           ///< above this; below it (or for a new set of cores) gmsh remeshes. 0: remesh
+                           ///< whenever a core moved. Default 20
     int disc_sides;        ///< sides of the polygon that stands for a disc's core; default 32
     int newton_max;        ///< Newton iterations per fluid step before the step is refused; default 20
 } pl_navier_stokes_def;
 
-#define PL_NAVIER_STOKES_PARAM_COUNT 20
+#define PL_NAVIER_STOKES_PARAM_COUNT 21
 extern const pl_param pl_navier_stokes_params[PL_NAVIER_STOKES_PARAM_COUNT];
 extern const int pl_navier_stokes_param_count;
 
@@ -102,12 +107,13 @@ pl_status pl_world_navier_stokes_body_force(const pl_world *w, int body, pl_vec2
 typedef struct pl_ns_stats {
     long fluid_steps;      ///< fluid steps solved
     long remeshes;         ///< full gmsh meshes built (the first included)
+    long relocations;      ///< fluid steps whose mesh followed the cores by node relocation
     long newton_iters;     ///< Newton iterations in total
     long symbolic, numeric;///< UMFPACK symbolic analyses and numeric factorisations
     int vertices, triangles, unknowns; ///< the current mesh and system
     double min_angle;      ///< smallest angle of the current mesh, degrees
     double nnz_matrix, nnz_lu; ///< entries of the Jacobian and of L + U (last factorisation)
-    double t_mesh, t_interp, t_assembly, t_factor, t_solve, t_forces;
+    double t_mesh, t_relocate, t_interp, t_assembly, t_factor, t_solve, t_forces;
 } pl_ns_stats;
 pl_status pl_world_navier_stokes_stats(const pl_world *w, pl_ns_stats *out);
 

@@ -116,6 +116,8 @@ typedef struct cores {
     double *xy, *motion;
 } cores;
 
+static void adopt_cores(pl_ns *m, cores *c);
+
 static void cores_free(cores *c) {
     pl_free(c->body);
     pl_free(c->off);
@@ -316,6 +318,12 @@ static pl_status remesh(pl_ns *m, pl_world *w, cores *c) {
     m->st.t_interp += cpu_now() - t0;
     m->sys = ns;
     m->built = 1;
+    adopt_cores(m, c);
+    return PL_OK;
+}
+
+/* Takes the cores c over as the mesh's cores. */
+static void adopt_cores(pl_ns *m, cores *c) {
     free_cores(m);
     m->nholes = c->n;
     m->hole_body = c->body;
@@ -323,7 +331,111 @@ static pl_status remesh(pl_ns *m, pl_world *w, cores *c) {
     m->core_xy = c->xy;
     m->hole_motion = c->motion;
     memset(c, 0, sizeof *c);
-    return PL_OK;
+}
+
+static int same_topology(const pl_ns *m, const cores *c) {
+    return m->built && m->nholes == c->n && !memcmp(m->hole_body, c->body, sizeof(int32_t) * (size_t)c->n) &&
+           !memcmp(m->core_off, c->off, sizeof(int32_t) * (size_t)(c->n + 1));
+}
+
+/* Mesh relaxation: the vertices on each core move with the core's rigid motion from the mesh's
+   cores to c, the box sides stay, the interior follows by Jacobi sweeps of the Laplacian of the
+   displacement (the neighbours' mean). Refused (-1, mesh unchanged) when a triangle inverts or
+   the smallest angle falls below remesh_angle; 0 when the solution has been carried over. */
+static int relocate(pl_ns *m, const cores *c) {
+    ns_system *s = &m->sys;
+    ns_mesh *M = &s->mesh;
+    const int nv = M->nv;
+    double *old = pl_malloc(sizeof(double) * (size_t)(4 * nv + 2 * s->nvel + 3 * s->nunk));
+    uint8_t *fixed = pl_calloc((size_t)nv + 1, 1);
+    int32_t *deg = pl_calloc((size_t)nv + 1, sizeof(int32_t));
+    if (!old || !fixed || !deg) {
+        pl_free(old);
+        pl_free(fixed);
+        pl_free(deg);
+        return -1;
+    }
+    double *d = old + 2 * nv, *ovxy = old + 4 * nv, *ox = ovxy + 2 * s->nvel;
+    memcpy(old, M->xy, sizeof(double) * 2 * (size_t)nv);
+    memset(d, 0, sizeof(double) * 2 * (size_t)nv);
+    for (int e = 0; e < M->ne; e++) {
+        deg[M->edge[2 * e]]++;
+        deg[M->edge[2 * e + 1]]++;
+        const int tag = M->edge_tag[e];
+        if (tag <= 0) continue;
+        for (int k = 0; k < 2; k++) {
+            const int v = M->edge[2 * e + k];
+            fixed[v] = 1;
+            if (tag < NS_TAG_HOLE0) continue;
+            const int h = tag - NS_TAG_HOLE0;
+            const double *mo = m->hole_motion + 5 * h, *mn = c->motion + 5 * h;
+            const double *p0 = m->core_xy + 2 * m->core_off[h], *q0 = c->xy + 2 * c->off[h];
+            const double ax = p0[0] - mo[3], ay = p0[1] - mo[4], bx = q0[0] - mn[3], by = q0[1] - mn[4];
+            const double th = atan2(ax * by - ay * bx, ax * bx + ay * by), ct = cos(th), st = sin(th);
+            const double rx = old[2 * v] - mo[3], ry = old[2 * v + 1] - mo[4];
+            d[2 * v] = mn[3] + ct * rx - st * ry - old[2 * v];
+            d[2 * v + 1] = mn[4] + st * rx + ct * ry - old[2 * v + 1];
+        }
+    }
+    /* Jacobi sweeps; the sum over neighbours through the edge list */
+    double *acc = pl_malloc(sizeof(double) * 2 * (size_t)nv);
+    if (!acc) {
+        pl_free(old);
+        pl_free(fixed);
+        pl_free(deg);
+        return -1;
+    }
+    for (int sweep = 0; sweep < 40; sweep++) {
+        memset(acc, 0, sizeof(double) * 2 * (size_t)nv);
+        for (int e = 0; e < M->ne; e++) {
+            const int a = M->edge[2 * e], b = M->edge[2 * e + 1];
+            acc[2 * a] += d[2 * b];
+            acc[2 * a + 1] += d[2 * b + 1];
+            acc[2 * b] += d[2 * a];
+            acc[2 * b + 1] += d[2 * a + 1];
+        }
+        for (int v = 0; v < nv; v++)
+            if (!fixed[v] && deg[v] > 0) {
+                d[2 * v] = acc[2 * v] / deg[v];
+                d[2 * v + 1] = acc[2 * v + 1] / deg[v];
+            }
+    }
+    pl_free(acc);
+    for (int v = 0; v < nv; v++) {
+        M->xy[2 * v] = old[2 * v] + d[2 * v];
+        M->xy[2 * v + 1] = old[2 * v + 1] + d[2 * v + 1];
+    }
+    int ok = 1;
+    for (int t = 0; t < M->nt && ok; t++) {
+        const int32_t *v = M->tri + 3 * t;
+        const double *p0 = M->xy + 2 * v[0], *p1 = M->xy + 2 * v[1], *p2 = M->xy + 2 * v[2];
+        ok = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p2[0] - p0[0]) * (p1[1] - p0[1]) > 0;
+    }
+    if (ok && m->def.remesh_angle > 0) ok = ns_mesh_min_angle(M) >= m->def.remesh_angle;
+    if (!ok || m->def.remesh_angle <= 0) {
+        memcpy(M->xy, old, sizeof(double) * 2 * (size_t)nv);
+        pl_free(old);
+        pl_free(fixed);
+        pl_free(deg);
+        return -1;
+    }
+    /* carry the solution over: the old geometry as a read-only view */
+    memcpy(ovxy, s->vxy, sizeof(double) * 2 * (size_t)s->nvel);
+    memcpy(ox, s->x, sizeof(double) * (size_t)s->nunk);
+    memcpy(ox + s->nunk, s->x1, sizeof(double) * (size_t)s->nunk);
+    memcpy(ox + 2 * s->nunk, s->x2, sizeof(double) * (size_t)s->nunk);
+    ns_system o = *s;
+    o.mesh.xy = old;
+    o.vxy = ovxy;
+    o.x = ox;
+    o.x1 = ox + s->nunk;
+    o.x2 = ox + 2 * s->nunk;
+    ns_system_update_geometry(s);
+    interpolate(&o, s, c);
+    pl_free(old);
+    pl_free(fixed);
+    pl_free(deg);
+    return 0;
 }
 
 /* ------------------------------------------------------------------ class functions */
@@ -363,9 +475,17 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
         return st;
     }
     if (!m->built || !cores_equal(m, &c)) {
-        st = remesh(m, w, &c);
-        cores_free(&c);
-        if (st != PL_OK) return st;
+        const double t0 = cpu_now();
+        if (same_topology(m, &c) && relocate(m, &c) == 0) {
+            adopt_cores(m, &c);
+            m->st.relocations++;
+            m->st.t_relocate += cpu_now() - t0;
+        } else {
+            m->st.t_relocate += cpu_now() - t0;
+            st = remesh(m, w, &c);
+            cores_free(&c);
+            if (st != PL_OK) return st;
+        }
     } else {
         /* same outlines: keep the mesh and its analysis; the velocities may differ */
         memcpy(m->hole_motion, c.motion, sizeof(double) * 5 * (size_t)c.n);

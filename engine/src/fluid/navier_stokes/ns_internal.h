@@ -184,6 +184,9 @@ typedef struct ns_system {
    boundary tag. 0 ok, -1 out of memory. */
 int ns_system_init(ns_system *s, ns_mesh *m, int kind, int ntags);
 void ns_system_free(ns_system *s);
+/* Recomputes the velocity node coordinates after the mesh vertices moved (same topology: the
+   pattern and the UMFPACK analysis stay valid). */
+void ns_system_update_geometry(ns_system *s);
 /* Marks the tags with velocity conditions (tag_kind[tag] = NS_BC_*) and evaluates fn at every
    node on them. Corners: the node takes the lowest Dirichlet tag among its edges. When no tag is
    natural the pressure is pinned at vertex 0. Call again whenever the boundary velocity changes. */

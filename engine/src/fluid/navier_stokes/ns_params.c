@@ -34,6 +34,8 @@ const pl_param pl_navier_stokes_params[PL_NAVIER_STOKES_PARAM_COUNT] = {
      "Newton stops when max |correction| <= tol (1 + max |unknown|)"},
     {"force_relaxation", NULL, NS_OFF(force_relaxation), PL_PARAM_DOUBLE, "1", 0.01, 1.0, 0.5,
      "beta: applied load = (1 - beta) previous + beta new fluid load (against the added-mass instability)"},
+    {"remesh_angle", NULL, NS_OFF(remesh_angle), PL_PARAM_DOUBLE, "deg", 0, 60, 20,
+     "nodes follow the cores while the smallest mesh angle stays above this; else gmsh remeshes (0: always)"},
     {"newton_max", NULL, NS_OFF(newton_max), PL_PARAM_INT, "1", 1, 200, 20, "Newton iterations per fluid step"},
 };
 const int pl_navier_stokes_param_count = (int)(sizeof pl_navier_stokes_params / sizeof pl_navier_stokes_params[0]);
