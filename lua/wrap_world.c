@@ -17,6 +17,7 @@ extern const luaL_Reg pl_lua_fluid_methods[]; /* wrap_fluid.c (fluid work) */
 extern const luaL_Reg pl_lua_darcy_methods[]; /* wrap_darcy.c (the Darcy model's parameters) */
 extern const luaL_Reg pl_lua_hydrostatic_methods[]; /* wrap_hydrostatic.c (hydrostatic water) */
 extern const luaL_Reg pl_lua_bond_methods[]; /* wrap_bonds.c (bonds, heat, wear) */
+extern const luaL_Reg pl_lua_navier_stokes_methods[]; /* wrap_navier_stokes.c (resolved Navier-Stokes) */
 extern const luaL_Reg pl_lua_state_methods[]; /* wrap_state.c (w:save, w:load) */
 
 pl_lua_world *pl_lua_check_world(lua_State *L, int idx)
@@ -427,6 +428,7 @@ void pl_lua_register_world(lua_State *L)
     luaL_setfuncs(L, pl_lua_darcy_methods, 0);
     luaL_setfuncs(L, pl_lua_hydrostatic_methods, 0);
     luaL_setfuncs(L, pl_lua_bond_methods, 0);
+    luaL_setfuncs(L, pl_lua_navier_stokes_methods, 0);
     luaL_setfuncs(L, pl_lua_diag_methods, 0);
     luaL_setfuncs(L, pl_lua_state_methods, 0);
     lua_setfield(L, -2, "__index");

@@ -1,0 +1,181 @@
+/* Benchmark of the resolved Navier–Stokes solver (not a test): error against CPU time for the
+ * three elements (P2 + bubble / P1, P2/P1, MINI) on several gmsh meshes of
+ *   - the lid-driven cavity at Re = 100 (error: largest deviation of the centreline extremes
+ *     u_min, v_min, v_max from the finest P2 + bubble run of the same benchmark), and
+ *   - the DFG 2D-1 cylinder (error: |c_D - 5.57953523384| / 5.5795, reference of John 2004),
+ * the cost split of each stationary solve (assembly, UMFPACK analysis, factorisation, solve,
+ * fill of L + U), and the cost per coupled step of the model with a moving grain (remesh,
+ * interpolation, assembly, factorisation, solve, forces).
+ *     bench_navier_stokes [OUT_DIR]     CSV to OUT_DIR/bench_navier_stokes.csv; with PLplot the
+ *                                       charts OUT_DIR/ns_cavity_error_cpu.png, ns_dfg_error_cpu.png */
+#include "navier_stokes/ns_cases.h"
+#include "porelab/navier_stokes.h"
+#include "porelab/world.h"
+#include <stdio.h>
+#include <stdlib.h>
+#if PL_NS_CHART
+#include <plplot.h>
+#endif
+
+#define NMESH 4
+static const char *names[3] = {"P2+bubble/P1", "P2/P1", "MINI"};
+
+#if PL_NS_CHART
+static void chart(const char *dir, const char *file, const char *ylab, const char *title, double C[3][NMESH],
+                  double E[3][NMESH], int nm) {
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    plsdev("pngcairo");
+    plsfnam(path);
+    plsetopt("geometry", "760x520");
+    plscolbg(255, 255, 255);
+    plinit();
+    plscol0(1, 0, 0, 0);
+    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+    for (int m = 0; m < 3; m++)
+        for (int k = 0; k < nm; k++) {
+            xmin = fmin(xmin, log10(C[m][k]));
+            xmax = fmax(xmax, log10(C[m][k]));
+            ymin = fmin(ymin, log10(E[m][k]));
+            ymax = fmax(ymax, log10(E[m][k]));
+        }
+    plcol0(1);
+    plenv(floor(xmin), ceil(xmax), floor(ymin), ceil(ymax), 0, 30);
+    pllab("CPU time per stationary solve (s)", ylab, title);
+    int colors[3] = {9, 3, 8};
+    for (int m = 0; m < 3; m++) {
+        double lx[NMESH], ly[NMESH];
+        for (int k = 0; k < nm; k++) {
+            lx[k] = log10(C[m][k]);
+            ly[k] = log10(E[m][k]);
+        }
+        plcol0(colors[m]);
+        plline(nm, lx, ly);
+        plpoin(nm, lx, ly, 4);
+    }
+    int opt[3] = {PL_LEGEND_LINE, PL_LEGEND_LINE, PL_LEGEND_LINE};
+    int tc[3] = {1, 1, 1}, sty[3] = {1, 1, 1};
+    double wid[3] = {1, 1, 1};
+    double lw, lh;
+    pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0, 3,
+             opt, 1.0, 0.8, 2.0, 1.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, NULL, NULL, NULL, NULL);
+    plend();
+    printf("wrote %s\n", path);
+}
+#endif
+
+static void moving_grain_cost(FILE *csv) {
+    pl_world_def wd = pl_default_world_def();
+    wd.dt = 2e-3;
+    pl_world *w = pl_world_create(&wd);
+    pl_material_def md = pl_default_material_def();
+    md.name = "grain";
+    md.density = 2500;
+    md.kn = 1e5;
+    pl_world_add_material(w, &md);
+    pl_body_def b = pl_default_body_def();
+    b.shape = PL_SHAPE_DISC;
+    b.material = 0;
+    b.radius = 0.01;
+    b.position = (pl_vec2){0, 0.25};
+    pl_world_add_body(w, &b);
+    pl_navier_stokes_def d = pl_default_navier_stokes_def();
+    d.x_min = -0.08;
+    d.x_max = 0.08;
+    d.y_max = 0.4;
+    d.viscosity = 50;
+    d.core_fraction = 1.0;
+    d.h_near = 0.002;
+    d.h_far = 0.02;
+    d.grade_distance = 0.04;
+    d.disc_sides = 64;
+    if (pl_world_attach_navier_stokes(w, &d) != PL_OK) {
+        printf("%s\n", pl_world_last_error(w));
+        pl_world_destroy(&w);
+        return;
+    }
+    const int n = 20;
+    if (pl_world_step(w, n) != PL_OK) printf("%s\n", pl_world_last_error(w));
+    pl_ns_stats s;
+    pl_world_navier_stokes_stats(w, &s);
+    const double per = 1.0 / (double)s.fluid_steps;
+    printf("\nmoving disc (settling, every step remeshed): %d vertices, %d unknowns, %ld meshes in %ld fluid steps, "
+           "%.1f Newton iterations per step\n",
+           s.vertices, s.unknowns, s.remeshes, s.fluid_steps, (double)s.newton_iters * per);
+    printf("  CPU per coupled step: remesh %.4f s, interpolation %.4f s, assembly %.4f s, factorisation %.4f s, "
+           "solve %.4f s, forces %.5f s; fill (L+U)/A %.1f\n",
+           s.t_mesh * per, s.t_interp * per, s.t_assembly * per, s.t_factor * per, s.t_solve * per,
+           s.t_forces * per, s.nnz_lu / s.nnz_matrix);
+    if (csv)
+        fprintf(csv, "moving_disc,P2+bubble/P1,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", s.unknowns, s.t_mesh * per,
+                s.t_interp * per, s.t_assembly * per, s.t_factor * per, s.t_solve * per, s.t_forces * per);
+    pl_world_destroy(&w);
+}
+
+int main(int argc, char **argv) {
+    const char *dir = argc > 1 ? argv[1] : ".";
+    char path[512], msg[512];
+    snprintf(path, sizeof path, "%s/bench_navier_stokes.csv", dir);
+    FILE *csv = fopen(path, "w");
+    if (csv) fprintf(csv, "case,element,h,unknowns,error,cpu,assembly,factor,solve,fill\n");
+    /* cavity: reference = finest P2 + bubble run */
+    const double ch[NMESH] = {0.16, 0.08, 0.04, 0.025}, cc[NMESH] = {0.008, 0.004, 0.002, 0.0012};
+    ns_cavity_result ref;
+    if (ns_case_cavity(NS_EL_P2B, 0.015, 0.0007, 100, &ref, msg, sizeof msg)) {
+        printf("%s\n", msg);
+        return 1;
+    }
+    printf("cavity reference (P2+bubble, h = 0.015, corners 0.0007, %d unknowns): u_min %.6f v_min %.6f v_max %.6f\n",
+           ref.nunk, ref.u_min, ref.v_min, ref.v_max);
+    double C[3][NMESH], E[3][NMESH];
+    for (int e = 0; e < 3; e++)
+        for (int k = 0; k < NMESH; k++) {
+            ns_cavity_result r;
+            if (ns_case_cavity(e, ch[k], cc[k], 100, &r, msg, sizeof msg)) {
+                printf("%s\n", msg);
+                return 1;
+            }
+            const double err = fmax(fabs(r.u_min - ref.u_min), fmax(fabs(r.v_min - ref.v_min), fabs(r.v_max - ref.v_max)));
+            E[e][k] = err;
+            C[e][k] = r.t_total;
+            const double fill = r.st.nnz_lu / r.st.nnz_matrix;
+            printf("cavity %-13s h=%.3f %6d unknowns: error %.2e, CPU %.2f s (assembly %.2f, analysis %.2f, factor "
+                   "%.2f, solve %.2f; %d Newton), fill %.1f, Ghia max dev %.4f/%.4f\n",
+                   names[e], ch[k], r.nunk, err, r.t_total, r.st.t_assemble, r.st.t_symbolic, r.st.t_numeric,
+                   r.st.t_solve, r.st.newton_iters, fill, r.err_u, r.err_v);
+            if (csv)
+                fprintf(csv, "cavity,%s,%g,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.3f\n", names[e], ch[k], r.nunk, err, r.t_total,
+                        r.st.t_assemble, r.st.t_symbolic + r.st.t_numeric, r.st.t_solve, fill);
+        }
+#if PL_NS_CHART
+    chart(dir, "ns_cavity_error_cpu.png", "max error of u_min, v_min, v_max (m/s)",
+          "Lid-driven cavity Re = 100: error against CPU time", C, E, NMESH);
+#endif
+    const double hn[NMESH] = {0.01, 0.005, 0.0035, 0.0025}, hf[NMESH] = {0.04, 0.03, 0.025, 0.02};
+    for (int e = 0; e < 3; e++)
+        for (int k = 0; k < NMESH; k++) {
+            ns_dfg_result r;
+            if (ns_case_dfg(e, hn[k], hf[k], 128, &r, msg, sizeof msg)) {
+                printf("%s\n", msg);
+                return 1;
+            }
+            const double err = fabs(r.cd - 5.57953523384) / 5.57953523384;
+            E[e][k] = err;
+            C[e][k] = r.t_total;
+            const double fill = r.st.nnz_lu / r.st.nnz_matrix;
+            printf("DFG    %-13s h=%.4f %6d unknowns: c_D %.5f (rel. error %.2e), c_L %.5f, dp %.5f, CPU %.2f s "
+                   "(assembly %.2f, analysis %.2f, factor %.2f, solve %.2f), fill %.1f\n",
+                   names[e], hn[k], r.nunk, r.cd, err, r.cl, r.dp, r.t_total, r.st.t_assemble, r.st.t_symbolic,
+                   r.st.t_numeric, r.st.t_solve, fill);
+            if (csv)
+                fprintf(csv, "dfg,%s,%g,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.3f\n", names[e], hn[k], r.nunk, err, r.t_total,
+                        r.st.t_assemble, r.st.t_symbolic + r.st.t_numeric, r.st.t_solve, fill);
+        }
+#if PL_NS_CHART
+    chart(dir, "ns_dfg_error_cpu.png", "relative error of c_D", "DFG 2D-1 (Re = 20): drag error against CPU time",
+          C, E, NMESH);
+#endif
+    moving_grain_cost(csv);
+    if (csv) fclose(csv);
+    return 0;
+}

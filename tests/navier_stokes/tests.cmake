@@ -1,0 +1,25 @@
+# Resolved Navier–Stokes (seed 004; fluid/navier_stokes/): kernels without a world, flows on
+# fixed gmsh meshes against analytic and published values, the model in a world. Label
+# "navier_stokes"; validations over ~20 s also "long" (their fast variants stay unlabelled).
+pl_add_c_test(test_ns_kernels SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_kernels.c LABEL "navier_stokes;unit" TIMEOUT 60)
+pl_add_c_test(test_ns_flow SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_flow.c LABEL "navier_stokes;physics" TIMEOUT 120)
+# Published benchmarks (cavity / Ghia, DFG 2D-1, cylinder between plates): fast meshes here,
+# the mesh sequences and all three elements with "long".
+pl_add_c_test(test_ns_validation SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_validation.c LABEL "navier_stokes;physics" TIMEOUT 120)
+add_test(NAME test_ns_validation_long COMMAND test_ns_validation long)
+set_tests_properties(test_ns_validation_long PROPERTIES LABELS "navier_stokes;physics;long" TIMEOUT 900)
+pl_add_c_test(test_ns_world SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_world.c LABEL "navier_stokes;physics" TIMEOUT 120)
+add_test(NAME test_ns_world_long COMMAND test_ns_world long)
+set_tests_properties(test_ns_world_long PROPERTIES LABELS "navier_stokes;physics;long" TIMEOUT 900)
+# Benchmark (not a test): error against CPU time for the three elements, cost split, charts
+# for docs/navier-stokes.md (with PLplot):  build/tests/bench_navier_stokes docs/figures
+add_executable(bench_navier_stokes ${PL_TEST_DIR}/bench/bench_navier_stokes.c)
+target_include_directories(bench_navier_stokes PRIVATE ${PL_TEST_DIR} ${CMAKE_SOURCE_DIR}/engine/src)
+target_link_libraries(bench_navier_stokes PRIVATE porelab_engine)
+find_library(PL_NS_PLPLOT_LIB plplot)
+find_path(PL_NS_PLPLOT_INCLUDE plplot.h PATH_SUFFIXES plplot)
+if(PL_NS_PLPLOT_LIB AND PL_NS_PLPLOT_INCLUDE)
+  target_compile_definitions(bench_navier_stokes PRIVATE PL_NS_CHART=1)
+  target_include_directories(bench_navier_stokes PRIVATE ${PL_NS_PLPLOT_INCLUDE})
+  target_link_libraries(bench_navier_stokes PRIVATE ${PL_NS_PLPLOT_LIB})
+endif()
