@@ -137,5 +137,6 @@ size_t pl__image_left(const pl_image *img);
 /* The model classes built into this engine (world/models.c lists them). */
 extern const pl_model_class pl_darcy_class;
 extern const pl_model_class pl_hydrostatic_class;
+extern const pl_model_class pl_stokes_class;
 
 #endif

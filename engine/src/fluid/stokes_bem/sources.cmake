@@ -4,4 +4,4 @@ list(APPEND PL_ENGINE_SOURCES
   src/fluid/stokes_bem/stokes_kernels.c
   src/fluid/stokes_bem/stokes_solve.c
   src/fluid/stokes_bem/stokes_params.c
-)
+  src/fluid/stokes_bem/stokes_model.c)

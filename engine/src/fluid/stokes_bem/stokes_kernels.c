@@ -268,7 +268,7 @@ static void interior_piece(const pl_sb_rules *r, pl_vec2 P, pl_vec2 a, pl_vec2 b
         return;
     }
     const int k = rho > 2 ? pl_sb_table_order(rho) : 3; /* 8 points at least near the boundary */
-    const int kk = k < 2 ? 2 : k;
+    const int kk = k < 1 ? 1 : k;
     const pl_vec2 n = pl_sb_normal(a, b);
     const double cu = 1 / (4 * M_PI * mu), jac = 0.5 * L * 0.5 * (e1 - e0);
     for (int q = 0; q < r->n[kk]; q++) {
