@@ -98,8 +98,9 @@ typedef struct pl_sb_solver {
 } pl_sb_solver;
 
 void pl_sb_solver_free(pl_sb_solver *s);
-/* Assembles [A]Y = R (4.55) with one gauge condition per closed curve whose node components
-   are all PL_SB_VEL (zero mean normal traction: the pressure level of the container, the
+/* Assembles [A]Y = R (4.55) with one gauge condition per closed curve whose conditions leave
+   a uniform pressure on it free (all velocity-given, or traction given only tangentially;
+   zero mean normal traction: the pressure level of the container, the
    force-free uniform pressure on a particle), solves it by LU and writes the solved values
    into bnd->t (PL_SB_VEL) or bnd->u (PL_SB_TRAC). With resist[c], also solves the unit
    motions (x, y, spin about centre[c]) of curve c with every other velocity zero and writes

@@ -50,10 +50,15 @@ static int grow(void **p, size_t *cap, size_t need) {
     return *p ? 0 : -1;
 }
 
-/* 1 when every node component of curve c is velocity-given (the curve needs a gauge). */
+/* 1 when the uniform pressure t = n on curve c is left free by its conditions: every
+   traction-given component is tangential (n's component 0 there, a slip wall), so the curve
+   needs a gauge. */
 static int needs_gauge(const pl_sb_bnd *b, int c) {
-    for (int d = 4 * b->curve_start[c]; d < 4 * b->curve_start[c + 1]; d++)
-        if (b->kind[d] != PL_SB_VEL) return 0;
+    for (int e = b->curve_start[c]; e < b->curve_start[c + 1]; e++) {
+        const pl_vec2 n = pl_sb_normal(b->a[e], b->b[e]);
+        for (int d = 0; d < 4; d++)
+            if (b->kind[4 * e + d] != PL_SB_VEL && fabs(d % 2 == 0 ? n.x : n.y) > 1e-9) return 0;
+    }
     return 1;
 }
 
