@@ -1,6 +1,6 @@
 /* VTK time series for ParaView (porelab run --vtk): per frame, DIR/vtk/frame_NNNNNN_bodies.vtu,
  * _contacts.vtu and (with a fluid model) _fluid.vtu, indexed by one collection DIR/run.pvd
- * and fluid.pvd, which are rewritten after every frame so they stay valid if a run stops. */
+ * (rewritten after every frame, whole, so it stays valid if a run stops). */
 #ifndef PL_APP_VTK_SERIES_H
 #define PL_APP_VTK_SERIES_H
 #include "porelab/world.h"

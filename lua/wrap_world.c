@@ -18,6 +18,7 @@ extern const luaL_Reg pl_lua_darcy_methods[]; /* wrap_darcy.c (the Darcy model's
 extern const luaL_Reg pl_lua_hydrostatic_methods[]; /* wrap_hydrostatic.c (hydrostatic water) */
 extern const luaL_Reg pl_lua_bond_methods[]; /* wrap_bonds.c (bonds, heat, wear) */
 extern const luaL_Reg pl_lua_navier_stokes_methods[]; /* wrap_navier_stokes.c (resolved Navier-Stokes) */
+extern const luaL_Reg pl_lua_stokes_methods[]; /* wrap_stokes.c (boundary-element Stokes fluid) */
 extern const luaL_Reg pl_lua_state_methods[]; /* wrap_state.c (w:save, w:load) */
 
 pl_lua_world *pl_lua_check_world(lua_State *L, int idx)
@@ -429,6 +430,7 @@ void pl_lua_register_world(lua_State *L)
     luaL_setfuncs(L, pl_lua_hydrostatic_methods, 0);
     luaL_setfuncs(L, pl_lua_bond_methods, 0);
     luaL_setfuncs(L, pl_lua_navier_stokes_methods, 0);
+    luaL_setfuncs(L, pl_lua_stokes_methods, 0);
     luaL_setfuncs(L, pl_lua_diag_methods, 0);
     luaL_setfuncs(L, pl_lua_state_methods, 0);
     lua_setfield(L, -2, "__index");

@@ -62,8 +62,29 @@ static int capture_generic(pl_render_scene *s, const pl_world *w, int field) {
     if (!tri) return -1;
     pl_world_field_sample(w, field, s->fluid_nodes, tri, s->fluid_values, nn, nt, &nt);
     for (int k = 0; k < 3 * nt; k++) s->fluid_tris[k] = tri[k];
-    free(tri);
     for (int t = 0; t < nt; t++) s->fluid_velocity[t] = (pl_vec2){0.0, 0.0};
+    /* resolved models (Stokes) give the fluid velocity at the nodes: triangle means for arrows */
+    double *vx = malloc((size_t)nn * 2u * sizeof *vx);
+    int nt2 = 0;
+    if (vx && pl_world_field_sample(w, PL_FLUID_VELOCITY_NODE_X, NULL, NULL, NULL, 0, 0, &nt2) == nn && nt2 == nt) {
+        pl_vec2 *xy = malloc((size_t)nn * sizeof *xy);
+        int32_t *tr = malloc((size_t)nt * 3u * sizeof *tr);
+        if (xy && tr && pl_world_field_sample(w, PL_FLUID_VELOCITY_NODE_X, xy, tr, vx, nn, nt, &nt2) == nn &&
+            pl_world_field_sample(w, PL_FLUID_VELOCITY_NODE_Y, xy, tr, vx + nn, nn, nt, &nt2) == nn) {
+            for (int t = 0; t < nt; t++) {
+                pl_vec2 u = {0.0, 0.0};
+                for (int c = 0; c < 3; c++) {
+                    u.x += vx[tri[3 * t + c]] / 3.0;
+                    u.y += vx[nn + tri[3 * t + c]] / 3.0;
+                }
+                s->fluid_velocity[t] = u;
+            }
+        }
+        free(xy);
+        free(tr);
+    }
+    free(vx);
+    free(tri);
     s->fluid_conductivity = 0.0;
     s->fluid_node_count = nn;
     s->fluid_tri_count = nt;

@@ -138,5 +138,6 @@ size_t pl__image_left(const pl_image *img);
 extern const pl_model_class pl_darcy_class;
 extern const pl_model_class pl_hydrostatic_class;
 extern const pl_model_class pl_navier_stokes_class;
+extern const pl_model_class pl_stokes_class;
 
 #endif
