@@ -10,5 +10,6 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/guards.c
   src/dem/diagnostics.c
   src/dem/stress.c
+  src/dem/box_query.c
 
   src/dem/vtk.c)

@@ -10,7 +10,7 @@
 #include <string.h>
 
 /* Built-in classes, in a fixed order: the flag table takes their flag rows in this order. */
-static const pl_model_class *const CLASSES[] = {&pl_darcy_class, &pl_hydrostatic_class};
+static const pl_model_class *const CLASSES[] = {&pl_darcy_class, &pl_hydrostatic_class, &pl_solid_class};
 #define NCLASSES ((int)(sizeof CLASSES / sizeof CLASSES[0]))
 
 int pl__model_class_count(void) { return NCLASSES; }
