@@ -157,6 +157,7 @@ struct pl_world {
 
     /* energy tallies (J) */
     double e_damped, e_friction, e_external, e_initial;
+    double e_models;              /* energy the attached models hold (world/models.c), for the surge guard */
     int energy_initialised;
     double ke_prev;
 

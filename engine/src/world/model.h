@@ -97,7 +97,10 @@ typedef struct pl_model_class {
     void (*destroy)(void *self);
     /* The model's critical time step, s (explicit models; the world's automatic step is
        dt_safety times the smallest of the grains' and the models'). May be NULL. */
-    double (*critical_dt)(const void *self);
+    double (*critical_dt)(const void *self, const pl_world *w);
+    /* Mechanical energy the model holds now and can give back to the grains (a solid's kinetic
+       and elastic energy), J per m; the energy-surge guard counts it as supplied. May be NULL. */
+    double (*stored_energy)(const void *self);
 } pl_model_class;
 
 /* ---- world services for models (world/models.c) ---- */

@@ -16,7 +16,7 @@ void pl__models_limit_dt(pl_world *w) {
     for (int k = 0; k < w->model_n; k++) {
         const pl_model_slot *m = &w->models[k];
         if (!m->cls->critical_dt) continue;
-        const double d = m->cls->critical_dt(m->self);
+        const double d = m->cls->critical_dt(m->self, w);
         if (!(d > 0) || !isfinite(d) || !(d < r->dt_critical)) continue;
         r->dt_critical = d;
         r->limiting_body = -1;

@@ -154,6 +154,9 @@ pl_status pl__models_step(pl_world *w, double dt) {
         work += (F.x * w->vel[i].x + F.y * w->vel[i].y + M * w->omega[i]) * dt;
     }
     w->e_external += work;
+    w->e_models = 0;
+    for (int k = 0; k < w->model_n; k++)
+        if (w->models[k].cls->stored_energy) w->e_models += w->models[k].cls->stored_energy(w->models[k].self);
     return PL_OK;
 }
 

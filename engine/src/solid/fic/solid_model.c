@@ -256,12 +256,23 @@ static pl_status grow_contact(pl_solid *m, int n) {
     return PL_OK;
 }
 
+static double contact_dt(const pl_solid *m, const pl_grain_view *g, int *what);
+
 static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, double dt) {
     pl_solid *m = self;
     if (!m->sf) return PL_OK;
     const double t0 = now();
     pl_sf *s = m->sf;
     s->gravity = g->gravity;
+    int what;
+    const double dtc = contact_dt(m, g, &what);
+    if (dt > dtc)
+        return pl__world_error(w, PL_ERR_UNSTABLE,
+                               "solid: the time step %.4g s exceeds the grain-edge contact limit 2 sqrt(m/k_n) = %.4g s "
+                               "of the lightest %s (k_n = %g N/m per m) at t = %.6g s; set dt <= %.4g s, dt = 0 "
+                               "(automatic), or lower contact_stiffness",
+                               dt, dtc, what ? "disc" : "boundary node", s->def.contact_stiffness, g->time,
+                               0.9 * dtc);
     if (grow_contact(m, g->n) != PL_OK) return pl__world_error(w, PL_ERR_NOMEM, "solid: out of memory (contacts)");
     for (int i = 0; i < g->n; i++) m->cf[i] = (pl_vec2){0, 0}, m->cm[i] = 0;
     memset(s->fc, 0, sizeof *s->fc * 2 * (size_t)s->nn);
@@ -317,9 +328,35 @@ static pl_status sd_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
     return PL_OK;
 }
 
-static double sd_critical_dt(const void *self) {
+/* Smallest of the element bound and the contact springs' limits 2 sqrt(m / k_n) for the
+   lightest boundary node and the lightest dynamic disc of the world. */
+static double contact_dt(const pl_solid *m, const pl_grain_view *g, int *what) {
+    const pl_sf *s = m->sf;
+    const double k = s->def.contact_stiffness;
+    double mmin = INFINITY;
+    *what = 0;
+    if (!(k > 0)) return INFINITY;
+    for (int q = 0; q < s->nbedge; q++) mmin = fmin(mmin, s->m[s->bedge[2 * q]]);
+    for (int i = 0; i < g->n; i++)
+        if (g->shape[i] == PL_SHAPE_DISC && g->motion[i] == PL_MOTION_DYNAMIC && g->mass[i] < mmin) {
+            mmin = g->mass[i];
+            *what = 1;
+        }
+    const double c = s->def.contact_damping, zeta = c / (2 * sqrt(k * mmin));
+    return 2 * sqrt(mmin / k) * (sqrt(1 + zeta * zeta) - zeta);
+}
+
+static double sd_critical_dt(const void *self, const pl_world *w) {
     const pl_solid *m = self;
-    return m->sf ? m->sf->dt_crit : INFINITY;
+    if (!m->sf) return INFINITY;
+    int what;
+    const pl_grain_view g = pl__world_grains(w);
+    return fmin(m->sf->dt_crit, contact_dt(m, &g, &what));
+}
+
+static double sd_stored_energy(const void *self) {
+    const pl_solid *m = self;
+    return m->sf ? m->sf->e.kinetic + pl_sf_elastic_energy(m->sf) + m->e_contact_spring : 0;
 }
 
 static uint64_t sd_hash(const void *self, uint64_t h) {
@@ -532,4 +569,5 @@ const pl_model_class pl_solid_class = {
     .cost = sd_cost,
     .destroy = sd_destroy,
     .critical_dt = sd_critical_dt,
+    .stored_energy = sd_stored_energy,
 };

@@ -138,11 +138,12 @@ static void contact_at(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, doub
     const double vqx = (1 - t) * s->v[2 * a] + t * s->v[2 * b], vqy = (1 - t) * s->v[2 * a + 1] + t * s->v[2 * b + 1];
     const double rx = vdx - vqx, ry = vdy - vqy;
     const double vn = rx * n.x + ry * n.y;
-    double Fn = d->contact_stiffness * delta - d->contact_damping * vn;
-    if (Fn < 0) Fn = 0;
+    /* eq. 105: elastic plus viscous part, not clipped (as the grains' own dashpot), so that an
+       impact has the restitution of the linear spring-dashpot; friction sees |F_n| */
+    const double Fn = d->contact_stiffness * delta - d->contact_damping * vn;
     const pl_vec2 tt = {-n.y, n.x};
     const double vt = rx * tt.x + ry * tt.y;
-    const double Ft = -d->friction * Fn * tanh(vt / d->slip_velocity);
+    const double Ft = -d->friction * fabs(Fn) * tanh(vt / d->slip_velocity);
     const double Fx = Fn * n.x + Ft * tt.x, Fy = Fn * n.y + Ft * tt.y;
     out->fx += Fx;
     out->fy += Fy;
@@ -150,8 +151,7 @@ static void contact_at(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, doub
     out->m += -r * n.x * Fy + r * n.y * Fx;
     out->touching = 1;
     if (delta > out->overlap) out->overlap = delta;
-    const double fd = d->contact_stiffness * delta - Fn; /* dashpot part (clipped force included) */
-    out->e_dashpot += fabs(fd * vn) * dt;
+    out->e_dashpot += d->contact_damping * vn * vn * dt;
     out->e_friction += fabs(Ft * vt) * dt;
     (void)q;
     if (fsolid) {
@@ -162,11 +162,20 @@ static void contact_at(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, doub
     }
 }
 
+/* A candidate contact of one disc with one boundary feature. */
+typedef struct cand {
+    int a, b, edge;
+    double t, delta;
+    pl_vec2 n, q;
+} cand;
+
 void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, double r, double dt, double *fsolid,
                         pl_sf_contact_out *out) {
     memset(out, 0, sizeof *out);
     const double *x = s->x;
-    for (int k = 0; k < s->nbedge; k++) {
+    cand cs[16];
+    int nc = 0;
+    for (int k = 0; k < s->nbedge && nc < 16; k++) {
         const int a = s->bedge[2 * k], b = s->bedge[2 * k + 1];
         const double ax = x[2 * a], ay = x[2 * a + 1], ex = x[2 * b] - ax, ey = x[2 * b + 1] - ay;
         /* quick reject on the edge's box */
@@ -182,27 +191,38 @@ void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, dou
         if (t > 0 && t < 1) {
             /* face contact: centre beside the edge, on its outer side */
             if (side <= 0 || side >= r) continue;
-            const pl_vec2 n = {ey / L, -ex / L};
-            const pl_vec2 q = {ax + t * ex, ay + t * ey};
-            contact_at(s, c, vc, omega, r, dt, q, n, r - side, a, b, t, fsolid, out);
+            cs[nc++] = (cand){a, b, k, t, r - side, {ey / L, -ex / L}, {ax + t * ex, ay + t * ey}};
         } else if (t <= 0) {
-            /* vertex a: counted by the edge that starts at a when the centre is beyond both
-               neighbouring edges (a convex corner), so that a corner is met once */
+            /* vertex a (counted by the edge that starts at a) when the centre lies past the end
+               of the previous edge too: a convex corner */
             const double dx = c.x - ax, dy = c.y - ay, dist = hypot(dx, dy);
             if (dist >= r || dist <= 0) continue;
-            /* the previous boundary edge ends at a: the centre must lie past its end */
             int ok = 1;
             for (int k2 = 0; k2 < s->nbedge; k2++) {
                 if (s->bedge[2 * k2 + 1] != a) continue;
                 const int p0 = s->bedge[2 * k2];
                 const double px = x[2 * p0], py = x[2 * p0 + 1], fx = ax - px, fy = ay - py;
-                if ((c.x - px) * fx + (c.y - py) * fy < fx * fx + fy * fy) ok = 0;
+                /* the same arithmetic as that edge's own face test, so exactly one of them counts */
+                const double tp = ((c.x - px) * fx + (c.y - py) * fy) / (fx * fx + fy * fy);
+                if (tp < 1) ok = 0;
                 break;
             }
             if (!ok) continue;
-            const pl_vec2 n = {dx / dist, dy / dist};
-            contact_at(s, c, vc, omega, r, dt, (pl_vec2){ax, ay}, n, r - dist, a, b, 0, fsolid, out);
+            cs[nc++] = (cand){a, b, k, 0, r - dist, {dx / dist, dy / dist}, {ax, ay}};
         }
+    }
+    /* one contact per stretch of boundary: where two candidates share a node (a slightly
+       concave kink of the deformed surface), only the deeper one acts, so that the contact
+       stiffness does not double at a node */
+    for (int i = 0; i < nc; i++) {
+        int keep = 1;
+        for (int j = 0; j < nc && keep; j++) {
+            if (j == i) continue;
+            const int share = cs[i].a == cs[j].a || cs[i].a == cs[j].b || cs[i].b == cs[j].a || cs[i].b == cs[j].b;
+            if (share && (cs[j].delta > cs[i].delta || (cs[j].delta == cs[i].delta && j < i))) keep = 0;
+        }
+        if (keep)
+            contact_at(s, c, vc, omega, r, dt, cs[i].q, cs[i].n, cs[i].delta, cs[i].a, cs[i].b, cs[i].t, fsolid, out);
     }
 }
 
