@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 
-static pl_sf *sf_from_quad(const pl_solid_def *d, pl_vec2 c0, pl_vec2 c1, pl_vec2 c2, pl_vec2 c3, int nx, int ny) {
+static inline pl_sf *sf_from_quad(const pl_solid_def *d, pl_vec2 c0, pl_vec2 c1, pl_vec2 c2, pl_vec2 c3, int nx, int ny) {
     const pl_vec2 c[4] = {c0, c1, c2, c3};
     pl_sf_mesh m;
     char msg[320];
@@ -21,11 +21,11 @@ static pl_sf *sf_from_quad(const pl_solid_def *d, pl_vec2 c0, pl_vec2 c1, pl_vec
     return s;
 }
 
-static pl_sf *sf_rect(const pl_solid_def *d, double x0, double y0, double x1, double y1, int nx, int ny) {
+static inline pl_sf *sf_rect(const pl_solid_def *d, double x0, double y0, double x1, double y1, int nx, int ny) {
     return sf_from_quad(d, (pl_vec2){x0, y0}, (pl_vec2){x1, y0}, (pl_vec2){x1, y1}, (pl_vec2){x0, y1}, nx, ny);
 }
 
-static int sf_nearest(const pl_sf *s, double x, double y) {
+static inline int sf_nearest(const pl_sf *s, double x, double y) {
     int best = 0;
     double bd = INFINITY;
     for (int i = 0; i < s->nn; i++) {
@@ -37,7 +37,7 @@ static int sf_nearest(const pl_sf *s, double x, double y) {
 
 /* Steps with damping until the watched displacement changes by less than rel over a window of
    `window` steps (or max_steps). Returns 0 on success, 1 on a step error. */
-static int sf_relax(pl_sf *s, double dt, int node, int comp, double rel, int window, long max_steps) {
+static inline int sf_relax(pl_sf *s, double dt, int node, int comp, double rel, int window, long max_steps) {
     double last = NAN;
     for (long k = 0; k < max_steps; k++) {
         if (pl_sf_step(s, dt, NULL) != PL_OK) {
