@@ -15,6 +15,7 @@ extern const luaL_Reg pl_lua_material_constructors[];
 extern const luaL_Reg pl_lua_fluid_methods[]; /* wrap_fluid.c (fluid work) */
 extern const luaL_Reg pl_lua_darcy_methods[]; /* wrap_darcy.c (the Darcy model's parameters) */
 extern const luaL_Reg pl_lua_hydrostatic_methods[]; /* wrap_hydrostatic.c (hydrostatic water) */
+extern const luaL_Reg pl_lua_solid_methods[]; /* wrap_solid.c (finite-element solid) */
 extern const luaL_Reg pl_lua_state_methods[]; /* wrap_state.c (w:save, w:load) */
 
 pl_lua_world *pl_lua_check_world(lua_State *L, int idx)
@@ -421,6 +422,7 @@ void pl_lua_register_world(lua_State *L)
     luaL_setfuncs(L, pl_lua_fluid_methods, 0);
     luaL_setfuncs(L, pl_lua_darcy_methods, 0);
     luaL_setfuncs(L, pl_lua_hydrostatic_methods, 0);
+    luaL_setfuncs(L, pl_lua_solid_methods, 0);
     luaL_setfuncs(L, pl_lua_diag_methods, 0);
     luaL_setfuncs(L, pl_lua_state_methods, 0);
     lua_setfield(L, -2, "__index");

@@ -14,3 +14,12 @@ endif()
 if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1")
   pl_add_c_test(test_solid_plastic SOURCES ${PL_TEST_DIR}/solids/test_solid_plastic.c LABEL solids TIMEOUT 60)
 endif()
+# Scenes of scenes/solids/ run to their end (imperative scripts with their own asserts).
+if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1" AND TARGET porelab)
+  foreach(scene cutting projectile buried_pipe)
+    add_test(NAME solid_scene_${scene} COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/solids/${scene}.lua -q
+             --out ${CMAKE_CURRENT_BINARY_DIR}/solids-out/${scene})
+    set_tests_properties(solid_scene_${scene} PROPERTIES LABELS solids TIMEOUT 120)
+  endforeach()
+  set_tests_properties(solid_scene_buried_pipe PROPERTIES LABELS "solids;long")
+endif()

@@ -97,6 +97,9 @@ int pl_world_solid_polygon(pl_world *w, const pl_vec2 *verts, int n, double h);
 int pl_world_solid_fix(pl_world *w, double x0, double y0, double x1, double y1, int mask);
 /// Drives the nodes in the box at constant velocity (a rigid tool holder). Returns the set index.
 int pl_world_solid_velocity(pl_world *w, double x0, double y0, double x1, double y1, int mask, double vx, double vy);
+/// Sets the velocity of the free nodes in the box now (an initial velocity: a projectile).
+/// Returns the number of nodes.
+int pl_world_solid_initial_velocity(pl_world *w, double x0, double y0, double x1, double y1, double vx, double vy);
 /// Traction (tx, ty) Pa plus normal pressure pn Pa (positive pushes into the solid) on the
 /// boundary edges whose two nodes lie in the box. Returns the number of edges.
 int pl_world_solid_traction(pl_world *w, double x0, double y0, double x1, double y1, double tx, double ty, double pn);

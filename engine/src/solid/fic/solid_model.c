@@ -153,6 +153,23 @@ int pl_world_solid_velocity(pl_world *w, double x0, double y0, double x1, double
     return k >= 0 ? k : pl__world_error(w, PL_ERR_NOMEM, "solid_fix: out of memory");
 }
 
+int pl_world_solid_initial_velocity(pl_world *w, double x0, double y0, double x1, double y1, double vx, double vy) {
+    pl_sf *s = need_sf(w, "solid_initial_velocity");
+    if (!s) return PL_ERR_STATE;
+    int n = 0;
+    for (int i = 0; i < s->nn; i++) {
+        const double x = s->x[2 * i], y = s->x[2 * i + 1];
+        if (!(x >= x0 && x <= x1 && y >= y0 && y <= y1)) continue;
+        if (!(s->fix[i] & 1)) s->v[2 * i] = vx;
+        if (!(s->fix[i] & 2)) s->v[2 * i + 1] = vy;
+        n++;
+    }
+    if (n == 0)
+        return pl__world_error(w, PL_ERR_ARG, "solid_initial_velocity: no node of the solid lies in the box [%g, %g] x [%g, %g]",
+                               x0, x1, y0, y1);
+    return n;
+}
+
 int pl_world_solid_traction(pl_world *w, double x0, double y0, double x1, double y1, double tx, double ty, double pn) {
     pl_sf *s = need_sf(w, "solid_traction");
     if (!s) return PL_ERR_STATE;
