@@ -23,12 +23,14 @@ void pl__models_limit_dt(pl_world *w) {
         r->limit_kind = m->cls->name;
     }
     if (r->fixed) return;
-    double dt = isfinite(r->dt_critical) ? w->def.dt_safety * r->dt_critical : 0;
+    /* as pl__compute_dt: a cap applies also when nothing limits the step */
+    double dt = isfinite(r->dt_critical) ? w->def.dt_safety * r->dt_critical : INFINITY;
     r->capped = 0;
     if (w->def.max_dt > 0 && dt > w->def.max_dt) {
         dt = w->def.max_dt;
         r->capped = 1;
     }
+    if (!isfinite(dt)) dt = 0;
     r->dt = dt;
     w->dt = dt;
 }
