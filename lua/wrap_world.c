@@ -19,6 +19,7 @@ extern const luaL_Reg pl_lua_hydrostatic_methods[]; /* wrap_hydrostatic.c (hydro
 extern const luaL_Reg pl_lua_bond_methods[]; /* wrap_bonds.c (bonds, heat, wear) */
 extern const luaL_Reg pl_lua_navier_stokes_methods[]; /* wrap_navier_stokes.c (resolved Navier-Stokes) */
 extern const luaL_Reg pl_lua_stokes_methods[]; /* wrap_stokes.c (boundary-element Stokes fluid) */
+extern const luaL_Reg pl_lua_solid_methods[]; /* wrap_solid.c (finite-element solid) */
 extern const luaL_Reg pl_lua_state_methods[]; /* wrap_state.c (w:save, w:load) */
 
 pl_lua_world *pl_lua_check_world(lua_State *L, int idx)
@@ -431,6 +432,7 @@ void pl_lua_register_world(lua_State *L)
     luaL_setfuncs(L, pl_lua_bond_methods, 0);
     luaL_setfuncs(L, pl_lua_navier_stokes_methods, 0);
     luaL_setfuncs(L, pl_lua_stokes_methods, 0);
+    luaL_setfuncs(L, pl_lua_solid_methods, 0);
     luaL_setfuncs(L, pl_lua_diag_methods, 0);
     luaL_setfuncs(L, pl_lua_state_methods, 0);
     lua_setfield(L, -2, "__index");

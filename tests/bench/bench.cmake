@@ -3,3 +3,7 @@ add_executable(bench_dem bench/bench_dem.c)
 target_link_libraries(bench_dem PRIVATE porelab_engine)
 add_executable(bench_bonds bench/bench_bonds.c)
 target_link_libraries(bench_bonds PRIVATE porelab_engine)
+# Solid kernels: element-steps per second (tests/bench/bench_solid.c; needs gmsh for the mesh).
+add_executable(bench_solid bench/bench_solid.c)
+target_include_directories(bench_solid PRIVATE ${CMAKE_SOURCE_DIR}/engine/src)
+target_link_libraries(bench_solid PRIVATE porelab_engine)

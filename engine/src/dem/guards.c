@@ -94,7 +94,7 @@ pl_status pl__check_guards(pl_world *w) {
     }
     if (w->step % 50 == 0) {
         const double ke = pl__kinetic_energy(w);
-        const double supply = w->e_supply0 + (w->pe0 - pl__gravitational_energy(w)) + (w->e_external - w->ext0);
+        const double supply = w->e_supply0 + (w->pe0 - pl__gravitational_energy(w)) + (w->e_external - w->ext0) + w->e_models;
         const double scale = fmax(fabs(supply), 1e-300);
         if (ke > w->def.energy_surge_ratio * scale && ke > 0) {
             /* find the fastest body to name it */

@@ -192,6 +192,7 @@ static pl_status rebuild(pl_world *w) {
         lox = loy = 0;
     }
     const int ncell = nx * ny;
+    w->grid_lo_x = lox, w->grid_lo_y = loy, w->grid_h = h, w->grid_nx = nx, w->grid_ny = ny, w->grid_n = n;
     int tmp_cap = w->cell_cap;
     if (!grow_i32(&w->cell_start, &tmp_cap, ncell + 1)) return pl__error(w, PL_ERR_NOMEM, "neighbour list: out of memory");
     w->cell_cap = tmp_cap;

@@ -14,5 +14,6 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/bond.c
   src/dem/bond_params.c
   src/dem/heat.c
+  src/dem/box_query.c
 
   src/dem/vtk.c)

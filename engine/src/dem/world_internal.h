@@ -147,6 +147,9 @@ struct pl_world {
     int32_t *cell_start, *cell_items, *body_cell, *cursor;
     int cell_cap, cell_items_cap, body_cell_cap, cursor_cap;
     int classify_dirty;           /* bodies added or changed motion: re-split grid/large */
+    /* the grid of the last build (dem/box_query.c reads it): origin, cell, size, body count */
+    double grid_lo_x, grid_lo_y, grid_h;
+    int grid_nx, grid_ny, grid_n;
 
     /* time */
     double time;
@@ -156,6 +159,7 @@ struct pl_world {
 
     /* energy tallies (J) */
     double e_damped, e_friction, e_external, e_initial;
+    double e_models;              /* energy the attached models hold (world/models.c), for the surge guard */
     int energy_initialised;
     double ke_prev;
 

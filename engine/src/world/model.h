@@ -95,6 +95,12 @@ typedef struct pl_model_class {
     /* Seconds of CPU spent per call of advance + loads so far (for `porelab info`), may be NULL. */
     double (*cost)(const void *self, long *calls);
     void (*destroy)(void *self);
+    /* The model's critical time step, s (explicit models; the world's automatic step is
+       dt_safety times the smallest of the grains' and the models'). May be NULL. */
+    double (*critical_dt)(const void *self, const pl_world *w);
+    /* Mechanical energy the model holds now and can give back to the grains (a solid's kinetic
+       and elastic energy), J per m; the energy-surge guard counts it as supplied. May be NULL. */
+    double (*stored_energy)(const void *self);
 } pl_model_class;
 
 /* ---- world services for models (world/models.c) ---- */
@@ -125,6 +131,12 @@ pl_status pl__world_set_flag_values(pl_world *w, const pl_model_class *cls, cons
 /* Acceleration of a prescribed body's law at time t (shaking-table frames); 0 if it has none. */
 int pl__world_body_acceleration(const pl_world *w, int body, double t, pl_vec2 *acc);
 
+/* Bodies whose bounding circle meets the box [lo, hi], ascending, from the grains' neighbour
+   grid (world/model_services.c); writes up to cap indices and returns the count. */
+int pl__world_bodies_near(const pl_world *w, pl_vec2 lo, pl_vec2 hi, int32_t *out, int cap);
+/* The model's critical step changed (a part added): the world recomputes its step. */
+void pl__world_invalidate_dt(pl_world *w);
+
 /* ---- state images (world/image.c) ---- */
 pl_status pl__image_put(pl_image *img, const void *data, size_t bytes);
 pl_status pl__image_get(pl_image *img, void *data, size_t bytes);
@@ -139,5 +151,6 @@ extern const pl_model_class pl_darcy_class;
 extern const pl_model_class pl_hydrostatic_class;
 extern const pl_model_class pl_navier_stokes_class;
 extern const pl_model_class pl_stokes_class;
+extern const pl_model_class pl_solid_class;
 
 #endif

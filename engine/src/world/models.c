@@ -11,7 +11,7 @@
 
 /* Built-in classes, in a fixed order: the flag table takes their flag rows in this order. */
 static const pl_model_class *const CLASSES[] = {&pl_darcy_class, &pl_hydrostatic_class, &pl_stokes_class,
-                                               &pl_navier_stokes_class};
+                                               &pl_navier_stokes_class, &pl_solid_class};
 #define NCLASSES ((int)(sizeof CLASSES / sizeof CLASSES[0]))
 
 int pl__model_class_count(void) { return NCLASSES; }
@@ -155,6 +155,9 @@ pl_status pl__models_step(pl_world *w, double dt) {
         work += (F.x * w->vel[i].x + F.y * w->vel[i].y + M * w->omega[i]) * dt;
     }
     w->e_external += work;
+    w->e_models = 0;
+    for (int k = 0; k < w->model_n; k++)
+        if (w->models[k].cls->stored_energy) w->e_models += w->models[k].cls->stored_energy(w->models[k].self);
     return PL_OK;
 }
 

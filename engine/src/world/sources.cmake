@@ -2,6 +2,7 @@
 list(APPEND PL_ENGINE_SOURCES
   src/world/world.c
   src/world/models.c
+  src/world/model_services.c
   src/world/flags.c
   src/world/snapshot.c
   src/world/image.c

@@ -88,12 +88,12 @@ double pl_world_time(const pl_world *w) { return w->time; }
 int64_t pl_world_step_count(const pl_world *w) { return w->step; }
 
 double pl_world_dt(pl_world *w) {
-    if (w->dt <= 0) pl__compute_dt(w);
+    if (w->dt <= 0) pl__compute_dt(w), pl__models_limit_dt(w);
     return w->dt;
 }
 
 pl_dt_report pl_world_dt_report(pl_world *w) {
-    if (w->dt <= 0) pl__compute_dt(w);
+    if (w->dt <= 0) pl__compute_dt(w), pl__models_limit_dt(w);
     return w->dt_report;
 }
 
@@ -126,7 +126,7 @@ pl_status pl_world_prepare(pl_world *w) {
 
 pl_status pl_world_step(pl_world *w, int nsteps) {
     if (nsteps < 0) return pl__error(w, PL_ERR_ARG, "step: the step count must be >= 0 (got %d)", nsteps);
-    if (w->dt <= 0) pl__compute_dt(w);
+    if (w->dt <= 0) pl__compute_dt(w), pl__models_limit_dt(w);
     if (w->dt <= 0 || !isfinite(w->dt))
         return pl__error(w, PL_ERR_STATE, "step: no valid time step (add a dynamic body, or set dt > 0)");
     if (w->pair_params_dirty) pl__update_pair_params(w);

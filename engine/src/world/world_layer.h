@@ -30,6 +30,8 @@ void pl__models_destroy(pl_world *w);
 /* Destroys and removes the attached instance of cls (if any). */
 void pl__world_detach(pl_world *w, const pl_model_class *cls);
 uint64_t pl__models_hash(const pl_world *w, uint64_t h);
+/* After pl__compute_dt: the models' critical steps into the report and the step (model_services.c). */
+void pl__models_limit_dt(pl_world *w);
 /* grows the external-force column to the body count (0 or PL_ERR_NOMEM) */
 pl_status pl__ext_reserve(pl_world *w);
 

@@ -1,0 +1,24 @@
+# Finite-element solid tests (label "solids"; docs/solids.md). Each test prints its measured
+# numbers and the closed form or published value beside it. They mesh with gmsh, so they are
+# built only when the engine has it (PL_HAVE_GMSH=1 on porelab_engine).
+get_target_property(_pl_engine_defs porelab_engine INTERFACE_COMPILE_DEFINITIONS)
+if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1")
+  pl_add_c_test(test_solid_elastic SOURCES ${PL_TEST_DIR}/solids/test_solid_elastic.c LABEL solids TIMEOUT 120)
+  set_tests_properties(test_solid_elastic PROPERTIES ENVIRONMENT "PL_TEST_ONLY=wave,crit,cant")
+  add_test(NAME test_solid_lame COMMAND test_solid_elastic)
+  set_tests_properties(test_solid_lame PROPERTIES ENVIRONMENT "PL_TEST_ONLY=lame" LABELS solids TIMEOUT 120)
+endif()
+if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1")
+  pl_add_c_test(test_solid_world SOURCES ${PL_TEST_DIR}/solids/test_solid_world.c LABEL solids TIMEOUT 120)
+endif()
+if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1")
+  pl_add_c_test(test_solid_plastic SOURCES ${PL_TEST_DIR}/solids/test_solid_plastic.c LABEL solids TIMEOUT 60)
+endif()
+# Scenes of scenes/solids/ run to their end (imperative scripts with their own asserts).
+if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1" AND TARGET porelab)
+  foreach(scene cutting projectile buried_pipe)
+    add_test(NAME solid_scene_${scene} COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/solids/${scene}.lua -q
+             --out ${CMAKE_CURRENT_BINARY_DIR}/solids-out/${scene})
+    set_tests_properties(solid_scene_${scene} PROPERTIES LABELS solids TIMEOUT 120)
+  endforeach()
+endif()
