@@ -10,8 +10,9 @@
  * The choice is made when the scene is loaded (or at its first step), before anything runs,
  * and explained (with the rejected alternatives) in porelab info and the run summary. A scene
  * that fixes Darcy where its assumptions break (Re_p > 10) gets a warning with the number.
- * Models not built yet (Stokes by boundary elements, Navier-Stokes) are named "not available
- * in this build"; MODELS below is where they join. */
+ * The resolved models (Stokes by boundary elements, Navier-Stokes) are named when they are the
+ * answer, but auto does not set them up yet (they need the container and the grain cores):
+ * MODELS below is where they join. */
 #include "fluid_auto.h"
 #include "lua_util.h"
 #include "porelab/darcy.h"
@@ -27,8 +28,9 @@
 
 #define NOTES_KEY "porelab.fluid_notes"
 
-/* The rungs of the ladder, cheapest first. available = 0: not built into this porelab yet
-   (the resolved models' branches set it to 1 and add their attach below). */
+/* The rungs of the ladder, cheapest first. available = 0: "auto" cannot set the model up yet
+   (the resolved models exist, w:stokes{} and w:navier_stokes{}, but need the scene's container
+   and grain cores; set it to 1 with an attach below to let "auto" choose them). */
 enum { M_HYDROSTATIC, M_DARCY, M_DARCY_CONS, M_STOKES, M_NAVIER_STOKES, M_COUNT };
 static const struct {
     const char *name, *what;
@@ -242,7 +244,7 @@ static double gravity(const pl_world *w)
     return fmax(hypot(gx, gy), 1e-12);
 }
 
-static const char *avail(int m) { return MODELS[m].available ? "" : " (not available in this build)"; }
+static const char *avail(int m) { return MODELS[m].available ? "" : " (not set up by auto yet: attach it by hand)"; }
 
 int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
 {
@@ -306,8 +308,8 @@ int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
         pick = M_DARCY;
         if (G.Re_p > 10) {
             snprintf(why, sizeof why,
-                     "Re_p = %.3g is past Darcy's range (Re_p < 1-10, Bear 1972): navier_stokes would answer it but is "
-                     "not available in this build; Darcy is the closest model that is (expect the drag to be too low)",
+                     "Re_p = %.3g is past Darcy's range (Re_p < 1-10, Bear 1972): navier_stokes would answer it but "
+                     "auto does not set it up yet (w:navier_stokes{}); Darcy is the closest model that is (expect the drag to be too low)",
                      G.Re_p);
         } else {
             snprintf(why, sizeof why, "seepage forces at Re_p = %.3g < 10: Darcy's law holds", G.Re_p);
@@ -343,8 +345,8 @@ int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
         snprintf(rejected, sizeof rejected, "hydrostatic: no flow; darcy: averages the flow over elements of several grains");
         if (!MODELS[pick].available) {
             char tmp[768];
-            snprintf(tmp, sizeof tmp, "%s, which is not available in this build; falling back to darcy (the flow "
-                     "averaged over elements, not between grains)", why);
+            snprintf(tmp, sizeof tmp, "%s, which auto does not set up yet (attach w:%s{} by hand); falling back to darcy (the flow "
+                     "averaged over elements, not between grains)", why, MODELS[pick].name);
             snprintf(why, sizeof why, "%s", tmp);
             pick = M_DARCY;
         }
@@ -380,7 +382,7 @@ void pl_lua_fluid_check_assumptions(lua_State *L, int world_idx)
                                "  warning        Darcy at a particle Reynolds number Re_p = %.3g (grains d = %.3g m, "
                                "speed scale %.3g m/s, FLUID_VISCOSITY %.3g Pa s): Darcy's law holds to Re_p ~ 1-10 "
                                "(Bear 1972); suggested model: hydrostatic when only buoyancy matters (w:water, or "
-                               "fluid = \"auto\" with needs = \"buoyancy\"), navier_stokes for the flow (not "
-                               "available in this build)",
+                               "fluid = \"auto\" with needs = \"buoyancy\"), navier_stokes for the flow "
+                               "(w:navier_stokes{})",
                                re, G.d, U, d.viscosity);
 }

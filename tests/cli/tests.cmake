@@ -370,7 +370,7 @@ endif()
 # fluid's set-up at step 0, a guard stop, and "no usable time step".
 pl_cli_test(bad_fluid_setup_line RC 1
   ARGS run ${PL_BAD}/fluid_no_quad.lua --quiet --out ${PL_CLI_OUT}/fluid_no_quad
-  MATCH "^porelab: tests/cli/bad/fluid_no_quad.lua:7: run stopped at t = 0 s \\(step 0 of 10\\): fluid: no fluid quad defined")
+  MATCH "porelab: tests/cli/bad/fluid_no_quad.lua:7: run stopped at t = 0 s \\(step 0 of 10\\): fluid: no fluid quad defined")
 pl_cli_test(bad_no_dt_line RC 1 ARGS run ${PL_BAD}/no_dt.lua --quiet --out ${PL_CLI_OUT}/no_dt
   MATCH "^porelab: tests/cli/bad/no_dt.lua:5: no usable time step: no dynamic body")
 pl_cli_test(bad_unstable_line RC 1 ARGS run ${PL_BAD}/unstable.lua --quiet --out ${PL_CLI_OUT}/unstable_line

@@ -42,10 +42,10 @@ target_link_libraries(test_stability_explicit_darcy PRIVATE porelab_render)
 foreach(case "floating;buoyancy: hydrostatic: no flow expected"
              "buoyancy_head;buoyancy: darcy, [0-9]+ elements: a head difference of 0.05 m drives flow"
              "seepage;seepage: darcy, [0-9]+ elements: seepage forces at Re_p = [0-9.]+ < 10"
-             "fast_seepage;seepage: darcy, [0-9]+ elements: Re_p = [0-9.e+]+ is past Darcy's range .*navier_stokes would answer it but is not available in this build"
+             "fast_seepage;seepage: darcy, [0-9]+ elements: Re_p = [0-9.e+]+ is past Darcy's range .*navier_stokes would answer it but auto does not set it up yet"
              "undrained;pore_pressure: darcy\\+consolidation, [0-9]+ elements: t_c = [0-9.e+]+ s is [0-9.e+]+ times the duration 2 s.*\\(undrained\\)"
              "drained;pore_pressure: hydrostatic: drained: excess pore pressure dissipates in t_c = [0-9.e-]+ s"
-             "between;flow_between_grains: darcy, [0-9]+ elements: .*stokes at Re_p = [0-9.e-]+, which is not available in this build")
+             "between;flow_between_grains: darcy, [0-9]+ elements: .*stokes at Re_p = [0-9.e-]+, which auto does not set up yet")
   list(GET case 0 scene)
   list(GET case 1 expect)
   pl_cli_test(auto_${scene} RC 0 ARGS info ${PL_CMP}/auto/${scene}.lua

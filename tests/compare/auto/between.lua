@@ -1,4 +1,4 @@
--- fluid = "auto" (docs/compare.md): the flow between light grains in a viscous liquid (Re_p << 1): Stokes by boundary elements is the model, not available in this build, so Darcy with a note.
+-- fluid = "auto" (docs/compare.md): the flow between light grains in a viscous liquid (Re_p << 1): Stokes by boundary elements is the model, which auto does not set up yet, so Darcy with a note.
 -- A tank 0.4 m wide with water to 0.3 m; a bed of 1100 discs of radius 0.01 m, 2 rows.
 -- porelab chooses the fluid model from the question; `porelab info` explains the choice.
 local w = porelab.world { gravity = { 0, -9.81 }, fluid = "auto", needs = "flow_between_grains",
