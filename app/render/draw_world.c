@@ -40,6 +40,7 @@ static int reserve(void **p, int *cap, int need, size_t elem) {
 
 /* bodies, vert_first and stress share body_cap */
 static int reserve_bodies(pl_render_scene *s, int need) {
+    if (need < 1) need = 1; /* vert_first[0] exists even for a world without bodies */
     if (need <= s->body_cap) return 0;
     int nc = s->body_cap ? s->body_cap : 64;
     while (nc < need) nc *= 2;

@@ -179,6 +179,9 @@ pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --ou
 # Numeric fields out of their documented ranges are refused with file:line, field and range.
 pl_cli_test(field_ranges RC 0 ARGS run tests/cli/lua/ranges.lua --quiet --out ${PL_CLI_OUT}/field_ranges
   MATCH "field ranges: 22 out-of-range inputs refused")
+# A world without bodies draws its (empty) frames instead of crashing the renderer.
+pl_cli_test(empty_world RC 0 ARGS run tests/cli/lua/empty_world.lua --quiet --out ${PL_CLI_OUT}/empty_world
+  EXPECT_FILE ${PL_CLI_OUT}/empty_world/frame_000001.png)
 # MIMES listings: the pair parameters of Appendix C.2 survive its three apply_* commands.
 pl_cli_test(mimes_pairs RC 0 ARGS run tests/cli/lua/mimes_pairs.lua --quiet --out ${PL_CLI_OUT}/mimes_pairs
   MATCH "mimes pairs: k_N 400000")

@@ -6,6 +6,7 @@
  * leaks from one call into the next. The engine steps single-threaded, so calls never nest. */
 #include "fluid/navier_stokes/ns_internal.h"
 #include "core/alloc.h"
+#include "mesh/gmsh_session.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -54,7 +55,7 @@ int ns_mesh_domain(const ns_domain *d, ns_mesh *out, char *msg, size_t msg_size)
         snprintf(msg, msg_size, "mesh domain: out of memory");
         goto done_nogmsh;
     }
-    gmshInitialize(0, NULL, 0, &ierr);
+    ierr = pl__gmsh_initialize(); /* not gmshInitialize: keeps gmsh (FLTK) out of $HOME */
     if (ierr) {
         snprintf(msg, msg_size, "gmsh could not be initialised (error %d)", ierr);
         goto done_nogmsh;

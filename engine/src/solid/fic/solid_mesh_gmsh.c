@@ -9,6 +9,7 @@
  * random perturbation). */
 #include "solid/fic/solid_mesh.h"
 #include "core/alloc.h"
+#include "mesh/gmsh_session.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -50,7 +51,7 @@ pl_status pl_sf_mesh_polygon(const pl_vec2 *v, int n, double h, pl_sf_mesh *out,
 
 static int begin(void) {
     int ierr = 0;
-    gmshInitialize(0, NULL, 0, &ierr);
+    ierr = pl__gmsh_initialize(); /* not gmshInitialize: keeps gmsh (FLTK) out of $HOME */
     gmshOptionSetNumber("General.Terminal", 0, &ierr);
     gmshOptionSetNumber("General.Verbosity", 0, &ierr);
     gmshOptionSetNumber("General.NumThreads", 1, &ierr);
