@@ -13,10 +13,11 @@ set(PL_VALIDATION_TESTS
   test_seed003_validation test_contact_laws test_engine_unit test_boundary_motion
   test_polygon_geometry test_polygon_contact test_polygon_incline test_polygon_determinism test_polygon_heap
   test_fluid_static test_fluid_mesh test_fluid_buoyancy test_fluid_edge test_fluid_wave test_fluid_bed test_fluid_porosity
-  test_fluid_frame test_fluid_snapshot
+  test_fluid_frame test_fluid_snapshot test_ns_flow test_ns_validation test_ns_world_long
   test_soil_terzaghi test_soil_undrained test_soil_overburden test_soil_quicksand soil_consolidation_short
-  soil_consolidation soil_liquefaction soil_simple_shear soil_simple_shear_uncoupled soil_simple_shear_full)
-set(PL_VALIDATION_LONG soil_consolidation soil_liquefaction soil_simple_shear_full)
+  soil_consolidation soil_liquefaction soil_simple_shear soil_simple_shear_uncoupled soil_simple_shear_full
+  test_solid_elastic test_solid_lame test_solid_plastic test_solid_world)
+set(PL_VALIDATION_LONG soil_consolidation soil_liquefaction soil_simple_shear_full test_ns_world_long)
 set(_pl_vt "")
 foreach(t IN LISTS PL_VALIDATION_TESTS)
   if(TEST ${t})

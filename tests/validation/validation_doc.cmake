@@ -8,7 +8,7 @@
 #     VALIDATION|<id>|<check>|<reference>|<tolerance>|<measured>
 # and rebuilds every table of DOC between the markers
 #     <!-- generated: validation <table> begin ... -->  and  <!-- generated: validation <table> end -->
-# (<table> = the id's prefix: grains, polygon, fluid, soil). One row per id, in the order of
+# (<table> = the id's prefix: grains, polygon, fluid, soil, solids). One row per id, in the order of
 # TESTS and of the lines within a test; check, reference and tolerance from the id's first line
 # that has them; the measured parts of all the id's lines joined by "; "; the tests that printed
 # the id (LONG ones marked "(long)"). Any failing test stops the script and leaves DOC as it was.
@@ -85,8 +85,8 @@ foreach(t IN LISTS TESTS)
     list(GET f 2 ref)
     list(GET f 3 tol)
     list(GET f 4 meas)
-    if(NOT id MATCHES "^(grains|polygon|fluid|soil)\\.[a-z0-9_]+$")
-      message(FATAL_ERROR "validation-doc: ${t}: bad row id '${id}' (want <grains|polygon|fluid|soil>.<name>)")
+    if(NOT id MATCHES "^(grains|polygon|fluid|soil|solids)\\.[a-z0-9_]+$")
+      message(FATAL_ERROR "validation-doc: ${t}: bad row id '${id}' (want <grains|polygon|fluid|soil|solids>.<name>)")
     endif()
     string(REPLACE "." "_" key "${id}")
     if(NOT id IN_LIST ids)
@@ -110,7 +110,7 @@ foreach(t IN LISTS TESTS)
     endif()
   endforeach()
 endforeach()
-foreach(table grains polygon fluid soil)
+foreach(table grains polygon fluid soil solids)
   set(tab_${table} "| check | reference | tolerance | measured | test (row id) |\n|---|---|---|---|---|\n")
 endforeach()
 foreach(id IN LISTS ids)
@@ -126,7 +126,7 @@ string(REPLACE "[" "@LB@" doc "${doc}")
 string(REPLACE "]" "@RB@" doc "${doc}")
 set(new "${doc}")
 set(differ "")
-foreach(table grains polygon fluid soil)
+foreach(table grains polygon fluid soil solids)
   set(re "(<!-- generated: validation ${table} begin[^>]*-->\n)(.*)(<!-- generated: validation ${table} end -->)")
   if(NOT new MATCHES "${re}")
     message(FATAL_ERROR "validation-doc: ${DOC} lacks the markers of table ${table}:\n"

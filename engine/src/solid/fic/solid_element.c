@@ -19,15 +19,6 @@ static double bulk_modulus(const pl_solid_def *d) { return d->young / (3 * (1 - 
 
 /* ---------------------------------------------------------------- geometry */
 
-/* Linear triangle: area and shape-function gradients (b = dN/dx, c = dN/dy). */
-static double tri_grad(const double *xy, const int32_t *n, double b[3], double c[3]) {
-    const double x1 = xy[2 * n[0]], y1 = xy[2 * n[0] + 1], x2 = xy[2 * n[1]], y2 = xy[2 * n[1] + 1];
-    const double x3 = xy[2 * n[2]], y3 = xy[2 * n[2] + 1];
-    const double a2 = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1);
-    b[0] = (y2 - y3) / a2; b[1] = (y3 - y1) / a2; b[2] = (y1 - y2) / a2;
-    c[0] = (x3 - x2) / a2; c[1] = (x1 - x3) / a2; c[2] = (x2 - x1) / a2;
-    return 0.5 * a2;
-}
 
 static const double GP = 0.57735026918962576451;
 static const double QXI[4] = {-1, 1, 1, -1}, QETA[4] = {-1, -1, 1, 1};
@@ -58,7 +49,7 @@ static double quad_grad(const double *xy, const int32_t *n, int g, double b[4], 
    (area share) and the element's nodes. */
 static double ip_grad(const pl_sf *s, const double *xy, int e, int g, double *b, double *c) {
     const int32_t *n = &s->conn[(size_t)e * s->nen];
-    return s->nen == 3 ? tri_grad(xy, n, b, c) : quad_grad(xy, n, g, b, c);
+    return s->nen == 3 ? pl_sf_tri_grad(xy, n, b, c) : quad_grad(xy, n, g, b, c);
 }
 
 static double elem_area(const pl_sf *s, const double *xy, int e) {

@@ -147,4 +147,15 @@ typedef struct pl_sf_contact_out {
 void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, double r, double dt,
                         double *fsolid, pl_sf_contact_out *out);
 
+/* Linear triangle with nodes n of the coordinates xy: area (positive counter-clockwise) and
+   shape-function gradients b = dN/dx, c = dN/dy. */
+static inline double pl_sf_tri_grad(const double *xy, const int32_t *n, double b[3], double c[3]) {
+    const double x1 = xy[2 * n[0]], y1 = xy[2 * n[0] + 1], x2 = xy[2 * n[1]], y2 = xy[2 * n[1] + 1];
+    const double x3 = xy[2 * n[2]], y3 = xy[2 * n[2] + 1];
+    const double a2 = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1);
+    b[0] = (y2 - y3) / a2; b[1] = (y3 - y1) / a2; b[2] = (y1 - y2) / a2;
+    c[0] = (x3 - x2) / a2; c[1] = (x1 - x3) / a2; c[2] = (x2 - x1) / a2;
+    return 0.5 * a2;
+}
+
 #endif

@@ -30,14 +30,6 @@ typedef struct fic_chol {
 
 static double bulk(const pl_solid_def *d) { return d->young / (3 * (1 - 2 * d->poisson)); }
 
-static double grads(const double *xy, const int32_t *n, double b[3], double c[3]) {
-    const double x1 = xy[2 * n[0]], y1 = xy[2 * n[0] + 1], x2 = xy[2 * n[1]], y2 = xy[2 * n[1] + 1];
-    const double x3 = xy[2 * n[2]], y3 = xy[2 * n[2] + 1];
-    const double a2 = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1);
-    b[0] = (y2 - y3) / a2; b[1] = (y3 - y1) / a2; b[2] = (y1 - y2) / a2;
-    c[0] = (x3 - x2) / a2; c[1] = (x1 - x3) / a2; c[2] = (x2 - x1) / a2;
-    return 0.5 * a2;
-}
 
 void pl_sf_fic_free(pl_sf *s) {
     fic_chol *f = s->chol;
@@ -124,7 +116,7 @@ static pl_status factorize(pl_sf *s, fic_chol *f, const double *xy) {
     for (int e = 0; e < s->ne; e++) {
         const int32_t *n = &s->conn[3 * (size_t)e];
         double b[3], c[3];
-        const double A = grads(xy, n, b, c);
+        const double A = pl_sf_tri_grad(xy, n, b, c);
         for (int a = 0; a < 3; a++)
             for (int q = 0; q < 3; q++) {
                 const int32_t pos = f->emap[9 * e + 3 * a + q];
@@ -151,7 +143,7 @@ static void explicit_operator(const pl_sf *s, const double *xy, const double *p,
     for (int e = 0; e < s->ne; e++) {
         const int32_t *n = &s->conn[3 * (size_t)e];
         double b[3], c[3];
-        const double A = grads(xy, n, b, c);
+        const double A = pl_sf_tri_grad(xy, n, b, c);
         const double gx = b[0] * p[n[0]] + b[1] * p[n[1]] + b[2] * p[n[2]];
         const double gy = c[0] * p[n[0]] + c[1] * p[n[1]] + c[2] * p[n[2]];
         for (int a = 0; a < 3; a++) {
@@ -166,7 +158,7 @@ static void explicit_operator(const pl_sf *s, const double *xy, const double *p,
     for (int e = 0; e < s->ne; e++) {
         const int32_t *n = &s->conn[3 * (size_t)e];
         double b[3], c[3];
-        const double A = grads(xy, n, b, c);
+        const double A = pl_sf_tri_grad(xy, n, b, c);
         const double gx = b[0] * p[n[0]] + b[1] * p[n[1]] + b[2] * p[n[2]] +
                           (pi[2 * n[0]] + pi[2 * n[1]] + pi[2 * n[2]]) / 3;
         const double gy = c[0] * p[n[0]] + c[1] * p[n[1]] + c[2] * p[n[2]] +
@@ -238,10 +230,10 @@ pl_status pl_sf_fic_pressure(pl_sf *s, const double *du) {
     for (int e = 0; e < s->ne; e++) {
         const int32_t *n = &s->conn[3 * (size_t)e];
         double b[3], c[3];
-        const double Ad = grads(xd, n, b, c);
+        const double Ad = pl_sf_tri_grad(xd, n, b, c);
         double ev = 0;
         for (int a = 0; a < 3; a++) ev += b[a] * du[2 * n[a]] + c[a] * du[2 * n[a] + 1];
-        const double A = grads(xy, n, b, c);
+        const double A = pl_sf_tri_grad(xy, n, b, c);
         double gx = (s->pi[2 * n[0]] + s->pi[2 * n[1]] + s->pi[2 * n[2]]) / 3;
         double gy = (s->pi[2 * n[0] + 1] + s->pi[2 * n[1] + 1] + s->pi[2 * n[2] + 1]) / 3;
         if (!semi) {
@@ -275,7 +267,7 @@ pl_status pl_sf_fic_pressure(pl_sf *s, const double *du) {
     for (int e = 0; e < s->ne; e++) {
         const int32_t *n = &s->conn[3 * (size_t)e];
         double b[3], c[3];
-        const double A = grads(xy, n, b, c);
+        const double A = pl_sf_tri_grad(xy, n, b, c);
         const double gx = b[0] * s->p[n[0]] + b[1] * s->p[n[1]] + b[2] * s->p[n[2]];
         const double gy = c[0] * s->p[n[0]] + c[1] * s->p[n[1]] + c[2] * s->p[n[2]];
         for (int a = 0; a < 3; a++) {
