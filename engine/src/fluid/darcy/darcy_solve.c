@@ -5,16 +5,13 @@
  * stability limit 2 / lambda_max(M^-1 K) (bounded with Gershgorin circles). */
 #define _POSIX_C_SOURCE 200809L
 #include "fluid/darcy/darcy_internal.h"
+#include "core/clock.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
 
-double pl_fl_now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+double pl_fl_now(void) { return pl_clock_seconds(); }
 
 void pl_fl_apply_dirichlet(struct pl_fluid *f, double *h) {
     const pl_fl_system *s = &f->sys;

@@ -4,6 +4,7 @@
  * hydrostatic_kernels.c. */
 #define _POSIX_C_SOURCE 200809L
 #include "fluid/hydrostatic/hydrostatic_internal.h"
+#include "core/clock.h"
 #include "core/alloc.h"
 #include "porelab/fluid.h"
 #include <math.h>
@@ -30,11 +31,6 @@ typedef struct hs_snap {
     double a_water;
 } hs_snap;
 
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static pl_status check_def(pl_world *w, const pl_hydrostatic_def *d) {
     char msg[320];
@@ -174,7 +170,7 @@ static pl_status hs_advance(void *self, pl_world *w, const pl_grain_view *g, dou
     (void)dt;
     pl_hydrostatic *m = self;
     if (!m->def.moving_level) return PL_OK;
-    const double t0 = now();
+    const double t0 = pl_clock_seconds();
     const pl_hs_water wt = pl_hs_water_make(&m->def, g->gravity);
     if (g->gravity.x != 0 || g->gravity.y != 0) {
         if (!(g->gravity.y < 0))
@@ -188,7 +184,7 @@ static pl_status hs_advance(void *self, pl_world *w, const pl_grain_view *g, dou
                                    g->time);
         m->def.level = L;
     }
-    m->seconds += now() - t0;
+    m->seconds += pl_clock_seconds() - t0;
     return PL_OK;
 }
 
@@ -196,7 +192,7 @@ static pl_status hs_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
                           double *moment) {
     (void)dt;
     pl_hydrostatic *m = self;
-    const double t0 = now();
+    const double t0 = pl_clock_seconds();
     if ((g->gravity.x != 0 || g->gravity.y != 0) && !(g->gravity.y < 0))
         return pl__world_error(w, PL_ERR_STATE,
                                "water: gravity (%g, %g) m/s^2 at t = %g s points out of the tank; the hydrostatic "
@@ -215,7 +211,7 @@ static pl_status hs_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
         force[i].y += F.y;
         moment[i] += M;
     }
-    m->seconds += now() - t0;
+    m->seconds += pl_clock_seconds() - t0;
     m->calls++;
     return PL_OK;
 }

@@ -10,6 +10,7 @@
  * resistances, the per-body results. Cache: the container block's LU factor. */
 #define _POSIX_C_SOURCE 200809L
 #include "core/alloc.h"
+#include "core/clock.h"
 #include "fluid/stokes_bem/stokes_internal.h"
 #include "porelab/fluid.h"
 #include "porelab/stokes.h"
@@ -68,11 +69,6 @@ typedef struct sb_snap {
     /* followed by nb pl_vec2 and nb double */
 } sb_snap;
 
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static pl_status check_def(pl_world *w, const pl_stokes_def *d) {
     char msg[320];
@@ -582,7 +578,7 @@ static pl_status sb_prepare(void *self, pl_world *w) {
 
 static pl_status sb_advance(void *self, pl_world *w, const pl_grain_view *g, double dt) {
     pl_stokes *m = self;
-    const double t0 = now();
+    const double t0 = pl_clock_seconds();
     pl_status st = PL_OK;
     if (m->steps % m->def.solve_every == 0) {
         st = solve(m, w, g, 1);
@@ -604,7 +600,7 @@ static pl_status sb_advance(void *self, pl_world *w, const pl_grain_view *g, dou
         }
     }
     if (st == PL_OK) m->steps++;
-    m->seconds += now() - t0;
+    m->seconds += pl_clock_seconds() - t0;
     return st;
 }
 

@@ -7,6 +7,7 @@
  * (the particles' size) is factorised each solve. */
 #define _POSIX_C_SOURCE 200809L
 #include "core/alloc.h"
+#include "core/clock.h"
 #include "fluid/stokes_bem/stokes_internal.h"
 #include <math.h>
 #include <string.h>
@@ -25,11 +26,6 @@ extern void dgemm_(const char *ta, const char *tb, const int *m, const int *n, c
 extern void dgemv_(const char *t, const int *m, const int *n, const double *alpha, const double *a, const int *lda,
                    const double *x, const int *incx, const double *beta, double *y, const int *incy);
 
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 void pl_sb_solver_free(pl_sb_solver *s) {
     pl_free(s->F);
@@ -63,7 +59,7 @@ static int needs_gauge(const pl_sb_bnd *b, int c) {
 }
 
 pl_status pl_sb_solve(pl_sb_solver *s, pl_sb_bnd *bnd, const pl_sb_rules *r, double mu, double *kres) {
-    const double t0 = now();
+    const double t0 = pl_clock_seconds();
     const int ne = bnd->ne, nef = bnd->curve_start[bnd->nfixed], nd = 4 * ne, ndf = 4 * nef;
     /* gauge unknowns: one per all-velocity curve */
     int lam[4096];
@@ -207,7 +203,7 @@ pl_status pl_sb_solve(pl_sb_solver *s, pl_sb_bnd *bnd, const pl_sb_rules *r, dou
                 }
         }
     }
-    const double t1 = now();
+    const double t1 = pl_clock_seconds();
     /* ---- factorisation: F (cached), then the Schur complement of the particles */
     int info = 0;
     pl_status st = PL_OK;
@@ -231,7 +227,7 @@ pl_status pl_sb_solve(pl_sb_solver *s, pl_sb_bnd *bnd, const pl_sb_rules *r, dou
         dgetrf_(&np, &np, D, &n, s->spiv, &info);
         if (info != 0) st = PL_ERR_NUMERIC;
     }
-    const double t2 = now();
+    const double t2 = pl_clock_seconds();
     /* ---- solve all right-hand sides */
     if (st == PL_OK) {
         const double m1 = -1, one = 1;
@@ -278,7 +274,7 @@ pl_status pl_sb_solve(pl_sb_solver *s, pl_sb_bnd *bnd, const pl_sb_rules *r, dou
     s->nrhs = nrhs;
     s->t_assemble = t1 - t0;
     s->t_factor = t2 - t1;
-    s->t_solve = now() - t2;
+    s->t_solve = pl_clock_seconds() - t2;
     if (lam_of != lam) pl_free(lam_of);
     if (rescol != rescol_buf) pl_free(rescol);
     pl_free(curve_of);

@@ -4,6 +4,7 @@
  * discs), the critical step, hash, snapshot, state image, field, cost. */
 #define _POSIX_C_SOURCE 200809L
 #include "solid/fic/solid_internal.h"
+#include "core/clock.h"
 #include "solid/fic/solid_mesh.h"
 #include "core/alloc.h"
 #include "world/model.h"
@@ -30,11 +31,6 @@ typedef struct pl_solid {
     long calls;
 } pl_solid;
 
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static pl_solid *get(const pl_world *w) { return w ? pl__world_model(w, &pl_solid_class) : NULL; }
 
@@ -278,7 +274,7 @@ static double contact_dt(const pl_solid *m, const pl_grain_view *g, int *what);
 static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, double dt) {
     pl_solid *m = self;
     if (!m->sf) return PL_OK;
-    const double t0 = now();
+    const double t0 = pl_clock_seconds();
     pl_sf *s = m->sf;
     s->gravity = g->gravity;
     int what;
@@ -324,7 +320,7 @@ static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, dou
         m->e_contact_spring += 0.5 * s->def.contact_stiffness * o.overlap * o.overlap;
     }
     pl_status st = pl_sf_step(s, dt, s->fc);
-    m->seconds += now() - t0;
+    m->seconds += pl_clock_seconds() - t0;
     if (st != PL_OK) return pl__world_error(w, st, "%s", s->err);
     return PL_OK;
 }
