@@ -11,6 +11,19 @@ endif()
 if(DEFINED NO_FILE) # left by an earlier run (or an earlier build): the check must see this one
   file(REMOVE "${NO_FILE}")
 endif()
+# A fresh output folder each time (a rerun of ctest in the same build must see the same output,
+# not "removed N frames of an earlier run"): only folders under the tests' own cli-out.
+list(FIND args "--out" _out_at)
+if(_out_at GREATER -1)
+  math(EXPR _out_at "${_out_at} + 1")
+  list(LENGTH args _nargs)
+  if(_out_at LESS _nargs)
+    list(GET args ${_out_at} _out_dir)
+    if(_out_dir MATCHES "/cli-out/" AND NOT DEFINED OUT_DIR) # OUT_DIR: a test that prepares the folder
+      file(REMOVE_RECURSE "${_out_dir}")
+    endif()
+  endif()
+endif()
 execute_process(COMMAND ${EXE} ${args}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
   WORKING_DIRECTORY "${WORKDIR}")
