@@ -15,5 +15,6 @@ return {
   run = { t_end = 8.0, fps = 2 },
   render = { size = { 1100, 260 }, camera = { -0.02, -0.02, 2.22, 0.43 },
              layers = "bodies,pressure,colorbar,title,time",
+             fluid_range = { 0, 0.15 },
              title = "Cylinder in a channel (DFG 2D-1, Re = 20): pressure" },
 }
