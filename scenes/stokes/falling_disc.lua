@@ -32,7 +32,7 @@ return {
   world = w,
   run = { t_end = 0.05, fps = 100 },
   render = { size = { 640, 800 }, camera = { -0.032, -0.030, 0.032, 0.030 },
-             layers = "bodies,pressure,velocity,colorbar,title,time", fluid_field = "excess_pressure",
+             layers = "bodies,pressure,velocity,colorbar,title,time", fluid_field = "excess_pressure", fluid_range = { -25, 25 },
              title = "Disc falling between walls (Stokes flow)" },
   on_frame = function(world, frame)
     local _, vy = disc:velocity()

@@ -734,6 +734,29 @@ static pl_status sb_load(void *self, pl_world *w, pl_image *img) {
     return PL_OK;
 }
 
+/* The point 'margin' into the fluid from the boundary point nearest to p (the fluid lies on
+   the left of every element); 0 if that point is not in the fluid (a narrow gap). */
+static int snap_to_fluid(const pl_stokes *m, pl_vec2 p, double margin, pl_vec2 *out) {
+    const pl_sb_bnd *b = &m->bnd;
+    double best = INFINITY;
+    pl_vec2 q = p;
+    for (int e = 0; e < b->ne; e++) {
+        const double dx = b->b[e].x - b->a[e].x, dy = b->b[e].y - b->a[e].y, L2 = dx * dx + dy * dy;
+        double s = L2 > 0 ? ((p.x - b->a[e].x) * dx + (p.y - b->a[e].y) * dy) / L2 : 0;
+        s = s < 0 ? 0 : (s > 1 ? 1 : s);
+        const pl_vec2 c = {b->a[e].x + s * dx, b->a[e].y + s * dy};
+        const double d = hypot(p.x - c.x, p.y - c.y);
+        if (d < best) {
+            best = d;
+            const pl_vec2 n = pl_sb_normal(b->a[e], b->b[e]);
+            q = (pl_vec2){c.x - margin * n.x, c.y - margin * n.y};
+        }
+    }
+    if (!in_fluid(m, q, 0.5 * margin)) return 0;
+    *out = q;
+    return 1;
+}
+
 /* Drawing field: a grid over the container (field_grid points along its longer side), nodes in
    the fluid, two triangles per cell whose corners are all in the fluid. Values: pressure
    (dynamic + ρ_l |g| (level - height), level = the container's top), excess pressure (the
@@ -755,8 +778,9 @@ static int field_grid(const pl_stokes *m, sb_field_cache *fc) {
     }
     const int ng = m->def.field_grid;
     const double h = fmax(x1 - x0, y1 - y0) / (ng - 1);
-    const int nx = (int)floor((x1 - x0) / h) + 1, ny = (int)floor((y1 - y0) / h) + 1;
-    const double ox = x0 + 0.5 * ((x1 - x0) - (nx - 1) * h), oy = y0 + 0.5 * ((y1 - y0) - (ny - 1) * h);
+    /* the grid spans the container's box exactly (spacing hx, hy close to h) */
+    const int nx = (int)ceil((x1 - x0) / h - 1e-9) + 1, ny = (int)ceil((y1 - y0) / h - 1e-9) + 1;
+    const double hx = (x1 - x0) / (nx - 1), hy = (y1 - y0) / (ny - 1), ox = x0, oy = y0;
     int32_t *idx = pl_malloc((size_t)nx * (size_t)ny * sizeof *idx);
     fc->xy = pl_malloc((size_t)nx * (size_t)ny * sizeof *fc->xy);
     fc->tri = pl_malloc((size_t)nx * (size_t)ny * 6 * sizeof *fc->tri);
@@ -768,10 +792,32 @@ static int field_grid(const pl_stokes *m, sb_field_cache *fc) {
     int nn = 0;
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++) {
-            const pl_vec2 p = {ox + i * h, oy + j * h};
+            const pl_vec2 p = {ox + i * hx, oy + j * hy};
             const int in = in_fluid(m, p, 0.05 * h);
-            idx[j * nx + i] = in ? nn : -1;
+            idx[j * nx + i] = in ? nn : -2;
             if (in) fc->xy[nn++] = p;
+        }
+    /* nodes of cells cut by a boundary (inside a particle, outside the container or too close
+       to an element) move to the nearest boundary point, 0.05 h into the fluid, so that the
+       cut cells are drawn up to the outline (the bodies are drawn over the field) instead of
+       leaving a blocky hole around each grain */
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            if (idx[j * nx + i] != -2) continue;
+            int near = 0;
+            for (int dj = -1; dj <= 1 && !near; dj++)
+                for (int di = -1; di <= 1 && !near; di++) {
+                    const int ii = i + di, jj = j + dj;
+                    near = ii >= 0 && jj >= 0 && ii < nx && jj < ny && idx[jj * nx + ii] >= 0;
+                }
+            idx[j * nx + i] = -1;
+            if (!near) continue;
+            const pl_vec2 p = {ox + i * hx, oy + j * hy};
+            pl_vec2 q;
+            if (snap_to_fluid(m, p, 0.05 * h, &q)) {
+                idx[j * nx + i] = nn;
+                fc->xy[nn++] = q;
+            }
         }
     int t = 0;
     for (int j = 0; j + 1 < ny; j++)
