@@ -100,6 +100,10 @@ pl_status pl_world_stokes_body(const pl_world *w, int body, pl_stokes_body_resul
 /// Mean pressure on the wall body i from the last solve (-t·n averaged over its side), Pa;
 /// NaN if the body is not a container side.
 double pl_world_stokes_wall_pressure(const pl_world *w, int body);
+/// Volume flux of the fluid out through the wall body i from the last solve (∫ u·n dΓ, n out of
+/// the fluid), m^2/s: the solved normal velocity of a held wall (load_wall) integrated; NaN if
+/// the body is not a container side.
+double pl_world_stokes_wall_flux(const pl_world *w, int body);
 /// Velocity (m/s) and dynamic pressure (Pa, the gauge of the solve) at an interior point from
 /// the last solve (seed 4.92 and the pressure kernel of docs/stokes.md). PL_ERR_ARG outside the
 /// fluid.

@@ -530,6 +530,19 @@ double pl_world_stokes_wall_pressure(const pl_world *w, int body) {
     return NAN;
 }
 
+double pl_world_stokes_wall_flux(const pl_world *w, int body) {
+    const pl_stokes *m = model(w);
+    if (!m || !m->solved) return NAN;
+    double q = 0;
+    int found = 0;
+    for (int k = 0; k < m->nside; k++) {
+        if (m->side_body[k] != body) continue;
+        q += pl_sb_curve_flux(&m->bnd, m->side_start[k], m->side_start[k + 1]);
+        found = 1;
+    }
+    return found ? q : NAN;
+}
+
 /* 1 when p is inside the container and outside every (shrunk) particle, by margin h. */
 static int in_fluid(const pl_stokes *m, pl_vec2 p, double h) {
     const pl_sb_bnd *b = &m->bnd;
