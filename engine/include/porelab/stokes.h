@@ -61,9 +61,13 @@ typedef struct pl_stokes_def {
     double load_force;     ///< force the held wall applies on the fluid along its inward
                            ///< normal, N per m thickness (pressure = load_force / length);
                            ///< default 0
+    int load_contacts;     ///< 1: the held wall gives the fluid only what its contacts do not
+                           ///< carry: traction from load_force minus the grains' contact force
+                           ///< on the wall in the last step (seed 003 §5.3.2, the unbalanced
+                           ///< force); 0: all of load_force. Default 0
 } pl_stokes_def;
 
-#define PL_STOKES_PARAM_COUNT 12
+#define PL_STOKES_PARAM_COUNT 13
 /// The parameter table of pl_stokes_def (Lua names as the fields; no MIMES flags).
 extern const pl_param pl_stokes_params[PL_STOKES_PARAM_COUNT];
 extern const int pl_stokes_param_count;

@@ -226,6 +226,11 @@ static pl_status build(pl_stokes *m, pl_world *w, const pl_grain_view *g) {
         const int i = sl[k].body;
         const pl_vec2 n = pl_sb_normal(p, q);
         const int held = i == d->load_wall;
+        double load = d->load_force;
+        if (held && d->load_contacts) { /* the unbalanced part (seed §5.3.2): contacts push along n */
+            pl_body_info bi;
+            if (pl_world_body_info(w, i, &bi) == PL_OK) load -= bi.force.x * n.x + bi.force.y * n.y;
+        }
         if (held && fabs(n.x) > 1e-9 && fabs(n.y) > 1e-9) {
             st = pl__world_error(w, PL_ERR_ARG,
                                  "stokes: load_wall %d is inclined (normal (%.3g, %.3g)); a wall held by a force must "
@@ -242,7 +247,7 @@ static pl_status build(pl_stokes *m, pl_world *w, const pl_grain_view *g) {
                     /* the wall pushes the fluid along -n with load_force / L: t = σ n = -(F/L) n */
                     const int comp = fabs(n.x) > fabs(n.y) ? 0 : 1;
                     b->kind[4 * e + 2 * mm + comp] = PL_SB_TRAC;
-                    b->t[4 * e + 2 * mm + comp] = -(d->load_force / L) * (comp == 0 ? n.x : n.y);
+                    b->t[4 * e + 2 * mm + comp] = -(load / L) * (comp == 0 ? n.x : n.y);
                 }
             }
         m->nside = k + 1;
@@ -770,6 +775,13 @@ static int snap_to_fluid(const pl_stokes *m, pl_vec2 p, double margin, pl_vec2 *
     return 1;
 }
 
+/* A triangle of snapped nodes whose centroid lies in a particle covers the particle, not the
+   fluid (the renderer would draw its mean velocity there): left out. */
+static int centroid_in_fluid(const pl_stokes *m, const pl_vec2 *xy, int a, int b, int c) {
+    const pl_vec2 g = {(xy[a].x + xy[b].x + xy[c].x) / 3, (xy[a].y + xy[b].y + xy[c].y) / 3};
+    return in_fluid(m, g, 0);
+}
+
 /* Drawing field: a grid over the container (field_grid points along its longer side), nodes in
    the fluid, two triangles per cell whose corners are all in the fluid. Values: pressure
    (dynamic + ρ_l |g| (level - height), level = the container's top), excess pressure (the
@@ -837,13 +849,13 @@ static int field_grid(const pl_stokes *m, sb_field_cache *fc) {
         for (int i = 0; i + 1 < nx; i++) {
             const int a = idx[j * nx + i], bq = idx[j * nx + i + 1], c = idx[(j + 1) * nx + i + 1],
                       d = idx[(j + 1) * nx + i];
-            if (a >= 0 && bq >= 0 && c >= 0) {
+            if (a >= 0 && bq >= 0 && c >= 0 && centroid_in_fluid(m, fc->xy, a, bq, c)) {
                 fc->tri[3 * t] = a;
                 fc->tri[3 * t + 1] = bq;
                 fc->tri[3 * t + 2] = c;
                 t++;
             }
-            if (a >= 0 && c >= 0 && d >= 0) {
+            if (a >= 0 && c >= 0 && d >= 0 && centroid_in_fluid(m, fc->xy, a, c, d)) {
                 fc->tri[3 * t] = a;
                 fc->tri[3 * t + 1] = c;
                 fc->tri[3 * t + 2] = d;

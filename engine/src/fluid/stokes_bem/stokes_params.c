@@ -29,6 +29,8 @@ const pl_param pl_stokes_params[PL_STOKES_PARAM_COUNT] = {
      "wall body held by a set force (seed 5.3.2): its normal traction given; -1: none"},
     {"load_force", NULL, SB_OFF(load_force), PL_PARAM_DOUBLE, "N/m", -1e30, 1e30, 0,
      "force of the held wall on the fluid along the wall's inward normal, per m thickness"},
+    {"load_contacts", NULL, SB_OFF(load_contacts), PL_PARAM_BOOL, "0/1", 0, 1, 0,
+     "1: the fluid gets load_force minus the contact force on the held wall (seed 5.3.2)"},
 };
 const int pl_stokes_param_count = (int)(sizeof pl_stokes_params / sizeof pl_stokes_params[0]);
 
