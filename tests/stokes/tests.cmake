@@ -15,3 +15,11 @@ pl_add_c_test(test_stokes_array SOURCES ${PL_TEST_DIR}/stokes/test_stokes_array.
 # table in docs/stokes.md): the same program, second group.
 add_test(NAME test_stokes_held COMMAND test_stokes_world held)
 set_tests_properties(test_stokes_held PROPERTIES LABELS "stokes;fluid" TIMEOUT 120)
+# The Lua API: every bad argument of w:stokes{...} names file, line, argument and range; the
+# queries (tests/stokes/lua_api.lua).
+if(TARGET porelab)
+  add_test(NAME stokes_lua_api COMMAND porelab run ${CMAKE_CURRENT_SOURCE_DIR}/stokes/lua_api.lua -q
+           --out ${CMAKE_CURRENT_BINARY_DIR}/stokes-out/lua_api)
+  set_tests_properties(stokes_lua_api PROPERTIES LABELS "stokes;fluid" TIMEOUT 60
+                       PASS_REGULAR_EXPRESSION "stokes lua api: [0-9]+ checks ok")
+endif()
