@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
+#include <string.h>
 #if PL_STOKES_CHART
 #include <plplot.h>
 #endif
@@ -74,13 +75,13 @@ static void chart(const char *dir, double c1[], double e1[], int n1, double c2[]
     plline(n2, lx2, ly2);
     plpoin(n2, lx2, ly2, 4);
     const char *names[2] = {"4.4.1 cylinder in Poiseuille flow (vs finest)", "5.1 disc between walls (vs Faxen)"};
-    int opt[2] = {PL_LEGEND_LINE | PL_LEGEND_SYMBOL, PL_LEGEND_LINE | PL_LEGEND_SYMBOL};
+    int opt[2] = {PL_LEGEND_LINE, PL_LEGEND_LINE};
     int tc[2] = {1, 1}, sty[2] = {1, 1}, colors[2] = {9, 3}, sc[2] = {9, 3}, sn[2] = {1, 1};
     double wid[2] = {1, 1}, ss[2] = {1, 1};
     const char *sym[2] = {"#(728)", "#(728)"};
     double lw, lh;
     pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0, 2,
-             opt, 1.0, 0.8, 2.0, 1.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, sc, ss, sn, sym);
+             opt, 1.0, 0.8, 2.0, 0.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, sc, ss, sn, sym);
     plend();
     printf("wrote %s\n", path);
 }
@@ -126,6 +127,7 @@ static int disc(pl_world *w, pl_vec2 c, double r) {
 
 int main(int argc, char **argv) {
     const char *dir = argc > 1 ? argv[1] : ".";
+    setvbuf(stdout, NULL, _IOLBF, 0);
     char path[512];
     snprintf(path, sizeof path, "%s/bench_stokes.csv", dir);
     FILE *csv = fopen(path, "w");
