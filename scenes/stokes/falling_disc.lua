@@ -16,7 +16,7 @@ w:wall { from = { B, -H / 2 - 0.01 }, to = { B, H / 2 + 0.01 }, material = mat }
 w:wall { from = { B + 0.01, H / 2 }, to = { -B - 0.01, H / 2 }, material = mat }
 w:wall { from = { -B, H / 2 + 0.01 }, to = { -B, -H / 2 - 0.01 }, material = mat }
 local disc = w:disc { center = { 0, 0 }, radius = R, material = mat }
-w:stokes { viscosity = MU, density = RHO_L, disc_elements = 32, element_length = 0.0025, field_grid = 160 }
+w:stokes { viscosity = MU, density = RHO_L, disc_elements = 32, element_length = 0.004, field_grid = 100 }
 
 local k = R / B
 local A = math.pi * R * R

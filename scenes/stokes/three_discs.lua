@@ -27,7 +27,7 @@ w:wall { from = { W + 0.05, H }, to = { -0.05, H }, material = mat }
 w:wall { from = { 0, H + 0.05 }, to = { 0, -0.05 }, material = mat }
 local discs = {}
 for k = 1, 3 do discs[k] = w:disc { center = { X[k], Y0 }, radius = R, material = mat } end
-w:stokes { viscosity = MU, density = RHO_L, disc_elements = 24, element_length = 0.1, field_grid = 240 }
+w:stokes { viscosity = MU, density = RHO_L, disc_elements = 16, element_length = 0.1, field_grid = 160 }
 
 local COLORS = { "#1f4e9c", "#9b2226", "#2a7f3f" }
 local hist = { t = {}, x = { {}, {}, {} }, y = { {}, {}, {} }, vy = { {}, {}, {} } }

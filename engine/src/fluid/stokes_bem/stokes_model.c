@@ -775,9 +775,11 @@ static int snap_to_fluid(const pl_stokes *m, pl_vec2 p, double margin, pl_vec2 *
     return 1;
 }
 
-/* A triangle of snapped nodes whose centroid lies in a particle covers the particle, not the
-   fluid (the renderer would draw its mean velocity there): left out. */
-static int centroid_in_fluid(const pl_stokes *m, const pl_vec2 *xy, int a, int b, int c) {
+/* A triangle whose three nodes were all snapped onto outlines and whose centroid lies in a
+   particle covers the particle, not the fluid (the renderer would draw its mean velocity
+   there): left out. Triangles with a grid node in the fluid are kept. */
+static int keep_triangle(const pl_stokes *m, const pl_vec2 *xy, int nfluid, int a, int b, int c) {
+    if (a < nfluid || b < nfluid || c < nfluid) return 1;
     const pl_vec2 g = {(xy[a].x + xy[b].x + xy[c].x) / 3, (xy[a].y + xy[b].y + xy[c].y) / 3};
     return in_fluid(m, g, 0);
 }
@@ -822,6 +824,7 @@ static int field_grid(const pl_stokes *m, sb_field_cache *fc) {
             idx[j * nx + i] = in ? nn : -2;
             if (in) fc->xy[nn++] = p;
         }
+    const int nfluid = nn; /* nodes [0, nfluid) are grid points in the fluid, the rest snapped */
     /* nodes of cells cut by a boundary (inside a particle, outside the container or too close
        to an element) move to the nearest boundary point, 0.05 h into the fluid, so that the
        cut cells are drawn up to the outline (the bodies are drawn over the field) instead of
@@ -849,13 +852,13 @@ static int field_grid(const pl_stokes *m, sb_field_cache *fc) {
         for (int i = 0; i + 1 < nx; i++) {
             const int a = idx[j * nx + i], bq = idx[j * nx + i + 1], c = idx[(j + 1) * nx + i + 1],
                       d = idx[(j + 1) * nx + i];
-            if (a >= 0 && bq >= 0 && c >= 0 && centroid_in_fluid(m, fc->xy, a, bq, c)) {
+            if (a >= 0 && bq >= 0 && c >= 0 && keep_triangle(m, fc->xy, nfluid, a, bq, c)) {
                 fc->tri[3 * t] = a;
                 fc->tri[3 * t + 1] = bq;
                 fc->tri[3 * t + 2] = c;
                 t++;
             }
-            if (a >= 0 && c >= 0 && d >= 0 && centroid_in_fluid(m, fc->xy, a, c, d)) {
+            if (a >= 0 && c >= 0 && d >= 0 && keep_triangle(m, fc->xy, nfluid, a, c, d)) {
                 fc->tri[3 * t] = a;
                 fc->tri[3 * t + 1] = c;
                 fc->tri[3 * t + 2] = d;
