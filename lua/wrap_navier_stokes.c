@@ -83,6 +83,7 @@ static int n_stats(lua_State *L)
     lua_newtable(L);
     setn(L, "fluid_steps", (double)s.fluid_steps);
     setn(L, "remeshes", (double)s.remeshes);
+    setn(L, "relocations", (double)s.relocations);
     setn(L, "newton_iters", (double)s.newton_iters);
     setn(L, "symbolic", (double)s.symbolic);
     setn(L, "numeric", (double)s.numeric);
@@ -93,11 +94,15 @@ static int n_stats(lua_State *L)
     setn(L, "nnz_matrix", s.nnz_matrix);
     setn(L, "nnz_lu", s.nnz_lu);
     setn(L, "t_mesh", s.t_mesh);
+    setn(L, "t_relocate", s.t_relocate);
     setn(L, "t_interp", s.t_interp);
     setn(L, "t_assembly", s.t_assembly);
     setn(L, "t_factor", s.t_factor);
     setn(L, "t_solve", s.t_solve);
     setn(L, "t_forces", s.t_forces);
+    setn(L, "t_stability", s.t_stability);
+    setn(L, "coupling_ratio", s.coupling_ratio);
+    setn(L, "coupling_body", s.coupling_body + 1);
     return 1;
 }
 
