@@ -584,7 +584,9 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
         cores_free(&c);
         return st;
     }
+    int moved = 0;
     if (!m->built || !cores_equal(m, &c)) {
+        moved = m->built;
         const double t0 = cpu_now();
         if (same_topology(m, &c) && relocate(m, &c) == 0) {
             adopt_cores(m, &c);
@@ -607,6 +609,21 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
     s->fy = g->gravity.y;
     s->convect = 1;
     set_bc(m);
+    if (moved && m->def.project && s->nhist > 0) {
+        /* the interpolated fields onto the discretely divergence-free ones (flux conserving) */
+        const double t0 = cpu_now();
+        const ns_stats keep = s->st;
+        char pmsg[200] = "";
+        double *const X[2] = {s->x1, s->x2};
+        const int rc = ns_system_project_many(s, X, s->nhist > 1 ? 2 : 1, pmsg, sizeof pmsg);
+        /* the Newton start: the projected last solution (x equals x1 after the last step) */
+        memcpy(s->x, s->x1, sizeof(double) * 2 * (size_t)s->nvel);
+        s->st = keep;
+        m->st.t_project += cpu_now() - t0;
+        if (rc)
+            return pl__world_error(w, PL_ERR_NUMERIC, "navier_stokes: at t = %g s, after the mesh changed: %s", g->time,
+                                   pmsg);
+    }
     const int first = s->nhist == 0; /* state, unlike the counters: the first step loads in full */
     if (first) ns_system_push_history(s, 0.0);
     char msg[400] = "";
