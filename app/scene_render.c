@@ -189,9 +189,11 @@ static void read_field_options(lua_State *L, pl_render_options *o)
     read_range(L, "fluid_range", &o->fluid_min, &o->fluid_max);
     /* Names in the order of pl_fluid_node_field, so the option index is the enum value. */
     static const char *const fields[] = {"head", "pressure_head", "pressure",
-                                         "excess_pressure", NULL};
+                                         "excess_pressure", "velocity_x", "velocity_y",
+                                         "speed", NULL};
     _Static_assert(PL_FLUID_HEAD == 0 && PL_FLUID_PRESSURE_HEAD == 1 &&
-                       PL_FLUID_PRESSURE == 2 && PL_FLUID_EXCESS_PRESSURE == 3,
+                       PL_FLUID_PRESSURE == 2 && PL_FLUID_EXCESS_PRESSURE == 3 &&
+                       PL_FLUID_VELOCITY_NODE_X == 4 && PL_RENDER_FLUID_SPEED == 6,
                    "fluid field names follow pl_fluid_node_field");
     o->fluid_field = pl_lua_field_option(L, 2, fn, "fluid_field", o->fluid_field, fields);
     o->isoline_count = pl_lua_field_int(L, 2, fn, "isolines", o->isoline_count);

@@ -2,7 +2,8 @@
  *     w:navier_stokes{ x_min = , y_min = , x_max = , y_max = , density = , viscosity = ,
  *                      core_fraction = , h_near = , h_far = , grade_distance = , element = ,
  *                      solve_every = , lid_velocity = , inflow_velocity = , open_right = ,
- *                      open_top = , newton_tol = , force_relaxation = , disc_sides = , newton_max = }
+ *                      open_top = , newton_tol = , force_relaxation = , remesh_angle = , disc_sides = ,
+ *                      newton_max = , project = , stability_every = }
  *     w:navier_stokes_at(x, y)      -> u, v (m/s), p (Pa), or nil outside the fluid mesh
  *     w:navier_stokes_force(body)   -> fx, fy (N per m), moment (N m) of the last fluid step
  *     w:navier_stokes_stats()       -> table of counters and CPU times (pl_ns_stats)
@@ -83,6 +84,7 @@ static int n_stats(lua_State *L)
     lua_newtable(L);
     setn(L, "fluid_steps", (double)s.fluid_steps);
     setn(L, "remeshes", (double)s.remeshes);
+    setn(L, "relocations", (double)s.relocations);
     setn(L, "newton_iters", (double)s.newton_iters);
     setn(L, "symbolic", (double)s.symbolic);
     setn(L, "numeric", (double)s.numeric);
@@ -93,11 +95,16 @@ static int n_stats(lua_State *L)
     setn(L, "nnz_matrix", s.nnz_matrix);
     setn(L, "nnz_lu", s.nnz_lu);
     setn(L, "t_mesh", s.t_mesh);
+    setn(L, "t_relocate", s.t_relocate);
     setn(L, "t_interp", s.t_interp);
     setn(L, "t_assembly", s.t_assembly);
     setn(L, "t_factor", s.t_factor);
     setn(L, "t_solve", s.t_solve);
     setn(L, "t_forces", s.t_forces);
+    setn(L, "t_stability", s.t_stability);
+    setn(L, "t_project", s.t_project);
+    setn(L, "coupling_ratio", s.coupling_ratio);
+    setn(L, "coupling_body", s.coupling_body + 1);
     return 1;
 }
 

@@ -13,7 +13,7 @@ PKGS=(
   libgmsh-dev liblapack-dev liblapacke-dev
 )
 # ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps.
-OPTIONAL=(ffmpeg xvfb xdotool parallel)
+OPTIONAL=(ffmpeg xvfb xdotool parallel freefem++)
 missing=()
 for p in "${PKGS[@]}" "${OPTIONAL[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -35,6 +35,7 @@ int pl_render_scene_set_fluid(pl_render_scene *s, const pl_vec2 *nodes, const do
                               int node_count, const int *tris, const pl_vec2 *velocity,
                               int tri_count, int field) {
     s->fluid_node_count = s->fluid_tri_count = 0;
+    s->mesh_node_count = s->mesh_tri_count = 0;
     s->fluid_conductivity = 0.0;
     if (node_count <= 0 || tri_count <= 0) return 0;
     if (reserve_fluid(s, node_count, tri_count)) return -1;
@@ -51,19 +52,51 @@ int pl_render_scene_set_fluid(pl_render_scene *s, const pl_vec2 *nodes, const do
     return 0;
 }
 
+/* The model's own element mesh (PL_FLUID_ELEMENT_MESH) for the mesh layer; none (0 triangles)
+   when the model draws its field on its elements directly. */
+static int capture_elements(pl_render_scene *s, const pl_world *w) {
+    s->mesh_node_count = s->mesh_tri_count = 0;
+    int nt = 0;
+    const int nn = pl_world_field_sample(w, PL_FLUID_ELEMENT_MESH, NULL, NULL, NULL, 0, 0, &nt);
+    if (nn <= 0 || nt <= 0) return 0;
+    pl_vec2 *xy = realloc(s->mesh_nodes, (size_t)nn * sizeof *xy);
+    if (!xy) return -1;
+    s->mesh_nodes = xy;
+    int *tr = realloc(s->mesh_tris, (size_t)nt * 3u * sizeof *tr);
+    if (!tr) return -1;
+    s->mesh_tris = tr;
+    int32_t *t32 = malloc((size_t)nt * 3u * sizeof *t32);
+    double *val = malloc((size_t)nn * sizeof *val);
+    if (!t32 || !val) {
+        free(t32);
+        free(val);
+        return -1;
+    }
+    if (pl_world_field_sample(w, PL_FLUID_ELEMENT_MESH, xy, t32, val, nn, nt, &nt) == nn) {
+        for (int k = 0; k < 3 * nt; k++) tr[k] = t32[k];
+        s->mesh_node_count = nn;
+        s->mesh_tri_count = nt;
+    }
+    free(t32);
+    free(val);
+    return 0;
+}
+
 /* A model without a Darcy mesh (hydrostatic water, resolved flow) gives its field sampled on
-   linear triangles (pl_world_field_sample); no velocities. */
+   linear triangles (pl_world_field_sample); resolved models also give the node velocities
+   (PL_FLUID_VELOCITY_NODE_X/Y): triangle means for the arrows, and the speed field. */
 static int capture_generic(pl_render_scene *s, const pl_world *w, int field) {
     int nt = 0;
-    const int nn = pl_world_field_sample(w, field, NULL, NULL, NULL, 0, 0, &nt);
+    const int speed = field == PL_RENDER_FLUID_SPEED;
+    const int q = speed ? PL_FLUID_VELOCITY_NODE_X : field;
+    const int nn = pl_world_field_sample(w, q, NULL, NULL, NULL, 0, 0, &nt);
     if (nn <= 0 || nt <= 0) return 0;
     if (reserve_fluid(s, nn, nt)) return -1;
     int32_t *tri = malloc((size_t)nt * 3u * sizeof *tri);
     if (!tri) return -1;
-    pl_world_field_sample(w, field, s->fluid_nodes, tri, s->fluid_values, nn, nt, &nt);
+    pl_world_field_sample(w, q, s->fluid_nodes, tri, s->fluid_values, nn, nt, &nt);
     for (int k = 0; k < 3 * nt; k++) s->fluid_tris[k] = tri[k];
     for (int t = 0; t < nt; t++) s->fluid_velocity[t] = (pl_vec2){0.0, 0.0};
-    /* resolved models (Stokes) give the fluid velocity at the nodes: triangle means for arrows */
     double *vx = malloc((size_t)nn * 2u * sizeof *vx);
     int nt2 = 0;
     if (vx && pl_world_field_sample(w, PL_FLUID_VELOCITY_NODE_X, NULL, NULL, NULL, 0, 0, &nt2) == nn && nt2 == nt) {
@@ -79,6 +112,8 @@ static int capture_generic(pl_render_scene *s, const pl_world *w, int field) {
                 }
                 s->fluid_velocity[t] = u;
             }
+            if (speed)
+                for (int i = 0; i < nn; i++) s->fluid_values[i] = hypot(vx[i], vx[nn + i]);
         }
         free(xy);
         free(tr);
@@ -88,11 +123,12 @@ static int capture_generic(pl_render_scene *s, const pl_world *w, int field) {
     s->fluid_conductivity = 0.0;
     s->fluid_node_count = nn;
     s->fluid_tri_count = nt;
-    return 0;
+    return capture_elements(s, w);
 }
 
 int pl_render_scene_capture_fluid(pl_render_scene *s, const pl_world *w, int field) {
     s->fluid_node_count = s->fluid_tri_count = 0;
+    s->mesh_node_count = s->mesh_tri_count = 0;
     s->fluid_field = field;
     int nn = pl_world_fluid_node_count(w), nt = pl_world_fluid_triangle_count(w);
     if (nn <= 0 || nt <= 0) return capture_generic(s, w, field);
@@ -178,6 +214,8 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
     if (!isfinite(lo)) lo = hi = 0.0;
     int field = s->fluid_field;
     int is_pa = field_is_pa(field);
+    int is_vel = field == PL_FLUID_VELOCITY_NODE_X || field == PL_FLUID_VELOCITY_NODE_Y ||
+                 field == PL_RENDER_FLUID_SPEED;
     *map = PL_CMAP_SEQUENTIAL;
     if (opt->fluid_max > opt->fluid_min) {
         lo = opt->fluid_min;
@@ -195,7 +233,7 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
          * diverging map, symmetric about zero; never narrower than the floor. */
         double floor_v = is_pa ? PL_FLUID_FLOOR_PA : PL_FLUID_FLOOR_M;
         int signed_field = lo < 0.0 && hi > 0.0 && -lo > 0.02 * hi && hi > 0.02 * -lo;
-        int zero_based = is_pa || field == PL_FLUID_PRESSURE_HEAD;
+        int zero_based = is_pa || is_vel || field == PL_FLUID_PRESSURE_HEAD;
         if (signed_field && zero_based) {
             double m = fmax(fmax(-lo, hi), floor_v);
             lo = -m;
@@ -224,8 +262,15 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
     const char *name = field == PL_FLUID_HEAD ? "total head"
                        : field == PL_FLUID_PRESSURE_HEAD ? "pressure head"
                        : field == PL_FLUID_EXCESS_PRESSURE ? "excess pore pressure"
+                       : field == PL_FLUID_VELOCITY_NODE_X ? "fluid velocity x"
+                       : field == PL_FLUID_VELOCITY_NODE_Y ? "fluid velocity y"
+                       : field == PL_RENDER_FLUID_SPEED ? "fluid speed"
                                                            : "pore pressure";
     const char *unit = "m";
+    if (is_vel) {
+        unit = "m/s";
+        if (fmax(fabs(lo), fabs(hi)) < 0.1) { *unit_factor = 1e3; unit = "mm/s"; }
+    }
     if (is_pa) {
         double m = fmax(fabs(lo), fabs(hi));
         unit = "Pa";
@@ -297,7 +342,13 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
     if (layers & PL_LAYER_MESH) {
         dl->current_layer = 3;
         pl_rgba c = {0.25f, 0.35f, 0.55f, 0.45f};
-        if (pl_draw_mesh_wire(dl, nodes, tris, nt, c, 0.6f)) dl->failed = 1;
+        const int own = s->mesh_tri_count > 0;
+        /* a resolved model's elements over the sequential map (dark at zero): light lines */
+        if (own && (opt->layers & PL_LAYER_PRESSURE) && map == PL_CMAP_SEQUENTIAL)
+            c = (pl_rgba){0.85f, 0.90f, 1.0f, 0.30f};
+        if (pl_draw_mesh_wire(dl, own ? s->mesh_nodes : nodes, own ? s->mesh_tris : tris,
+                              own ? s->mesh_tri_count : nt, c, 0.6f))
+            dl->failed = 1;
     }
     if (layers & PL_LAYER_ISOLINES) {
         dl->current_layer = 5;

@@ -21,6 +21,8 @@ void pl_render_scene_free(pl_render_scene *s) {
     free(s->fluid_values);
     free(s->fluid_tris);
     free(s->fluid_velocity);
+    free(s->mesh_nodes);
+    free(s->mesh_tris);
     free(s->temperature);
     free(s->hidden);
     free(s->bonds);

@@ -32,6 +32,8 @@ typedef struct pl_render_scene {
     int *fluid_tris;        int fluid_tri_count, fluid_tri_cap; ///< 3 node indices per triangle
     pl_vec2 *fluid_velocity;///< Darcy velocity per triangle, m/s
     int fluid_field;        ///< which node field fluid_values holds (pl_fluid_node_field)
+    pl_vec2 *mesh_nodes;    int mesh_node_count; ///< the model's own elements for the mesh layer
+    int *mesh_tris;         int mesh_tri_count;  ///< (PL_FLUID_ELEMENT_MESH); 0: fluid_tris
     double fluid_conductivity; ///< largest element conductivity, m/s (0 = unknown); Darcy
                             ///< velocities below 1e-9 of it (gradients < 1e-9) are not drawn
     double *temperature;    ///< per body, K (NaN without heat; porelab/bonds.h)

@@ -30,6 +30,10 @@ enum {
 };
 #define PL_LAYERS_DEFAULT (PL_LAYER_BODIES | PL_LAYER_FORCES | PL_LAYER_TIME)
 
+/// fluid_field value: the speed |u| (m/s) from the node velocities PL_FLUID_VELOCITY_NODE_X/Y
+/// of a resolved model (Stokes, Navier-Stokes).
+#define PL_RENDER_FLUID_SPEED 6
+
 typedef struct pl_rgba {
     float r, g, b, a; ///< 0..1
 } pl_rgba;
@@ -67,7 +71,7 @@ typedef struct pl_render_options {
                               ///< with PL_LAYER_OVERLAY; not owned; default NULL
     double time_offset;       ///< added to the world time in the time stamp, s; default 0
     int fluid_field;          ///< node field for PL_LAYER_PRESSURE / ISOLINES: a pl_fluid_node_field
-                              ///< (porelab/fluid.h); default PL_FLUID_PRESSURE (Pa)
+                              ///< (porelab/fluid.h) or PL_RENDER_FLUID_SPEED; default PL_FLUID_PRESSURE (Pa)
     int isoline_count;        ///< about this many nice isoline levels; default 10
     double fluid_min, fluid_max; ///< range of the fluid field; fluid_max <= fluid_min = automatic
     double velocity_scale;    ///< arrow length per unit Darcy velocity, m per (m/s); 0 = automatic

@@ -9,7 +9,7 @@ local m = w:material { name = "grain", density = 2500, kn = 1e5 }
 w:disc { center = { 0, 0.25 }, radius = 0.01, material = m }
 w:navier_stokes { x_min = -0.08, y_min = 0, x_max = 0.08, y_max = 0.4, density = 1000, viscosity = 50,
                   core_fraction = 1.0, h_near = 0.003, h_far = 0.03, grade_distance = 0.04,
-                  disc_sides = 64, solve_every = 20 }
+                  disc_sides = 64, solve_every = 20, force_relaxation = 0.3 }
 return {
   world = w,
   run = { t_end = 0.4, fps = 10 },

@@ -7,12 +7,15 @@
  * fill of L + U), and the cost per coupled step of the model with a moving grain (remesh,
  * interpolation, assembly, factorisation, solve, forces).
  *     bench_navier_stokes [OUT_DIR]     CSV to OUT_DIR/bench_navier_stokes.csv; with PLplot the
- *                                       charts OUT_DIR/ns_cavity_error_cpu.png, ns_dfg_error_cpu.png */
+ *                                       charts OUT_DIR/ns_cavity_error_cpu.png, ns_dfg_error_cpu.png
+ *     bench_navier_stokes --cavity-p2 H only the Taylor-Hood P2/P1 cavity at Re = 100 on a uniform
+ *                                       mesh of size H, one line "FF ..." for run_freefem_ns.sh */
 #include "navier_stokes/ns_cases.h"
 #include "porelab/navier_stokes.h"
 #include "porelab/world.h"
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #if PL_NS_CHART
 #include <plplot.h>
 #endif
@@ -89,6 +92,7 @@ static void moving_grain_cost(FILE *csv) {
     d.h_far = 0.02;
     d.grade_distance = 0.04;
     d.disc_sides = 64;
+    d.force_relaxation = 0.3; /* below the coupling limit (rotation: beta (1 + 4.3) < 2) */
     if (pl_world_attach_navier_stokes(w, &d) != PL_OK) {
         printf("%s\n", pl_world_last_error(w));
         pl_world_destroy(&w);
@@ -99,13 +103,14 @@ static void moving_grain_cost(FILE *csv) {
     pl_ns_stats s;
     pl_world_navier_stokes_stats(w, &s);
     const double per = 1.0 / (double)s.fluid_steps;
-    printf("\nmoving disc (settling, every step remeshed): %d vertices, %d unknowns, %ld meshes in %ld fluid steps, "
-           "%.1f Newton iterations per step\n",
-           s.vertices, s.unknowns, s.remeshes, s.fluid_steps, (double)s.newton_iters * per);
-    printf("  CPU per coupled step: remesh %.4f s, interpolation %.4f s, assembly %.4f s, factorisation %.4f s, "
-           "solve %.4f s, forces %.5f s; fill (L+U)/A %.1f\n",
-           s.t_mesh * per, s.t_interp * per, s.t_assembly * per, s.t_factor * per, s.t_solve * per,
-           s.t_forces * per, s.nnz_lu / s.nnz_matrix);
+    printf("\nmoving disc (settling): %d vertices, %d unknowns, %ld gmsh meshes and %ld relocations in %ld fluid "
+           "steps, %.1f Newton iterations per step\n",
+           s.vertices, s.unknowns, s.remeshes, s.relocations, s.fluid_steps, (double)s.newton_iters * per);
+    printf("  CPU per coupled step: remesh %.4f s, relocation %.4f s, interpolation %.4f s, projection %.4f s, "
+           "assembly %.4f s, factorisation %.4f s, solve %.4f s, forces %.5f s, coupling check %.4f s; fill (L+U)/A "
+           "%.1f\n",
+           s.t_mesh * per, s.t_relocate * per, s.t_interp * per, s.t_project * per, s.t_assembly * per,
+           s.t_factor * per, s.t_solve * per, s.t_forces * per, s.t_stability * per, s.nnz_lu / s.nnz_matrix);
     if (csv)
         fprintf(csv, "moving_disc,P2+bubble/P1,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", s.unknowns, s.t_mesh * per,
                 s.t_interp * per, s.t_assembly * per, s.t_factor * per, s.t_solve * per, s.t_forces * per);
@@ -115,6 +120,35 @@ static void moving_grain_cost(FILE *csv) {
 int main(int argc, char **argv) {
     const char *dir = argc > 1 ? argv[1] : ".";
     char path[512], msg[512];
+    if (argc > 3 && !strcmp(argv[1], "--plates")) {
+        /* lambda = F / (mu U0) of a fixed circle (128-gon, r = 1) midway between walls at y = +-b,
+           k = 1/b, with Poiseuille profiles prescribed at x = +-L */
+        const double k = atof(argv[2]), L = atof(argv[3]);
+        const double hn = argc > 4 ? atof(argv[4]) : 0.05, hf = argc > 5 ? atof(argv[5]) : 0.5;
+        ns_plates_result r;
+        if (!(k > 0.01 && k < 0.9 && L > 2 / k) ||
+            ns_case_plates(NS_EL_P2B, 128, 1.0, NS_PI, 1.0 / k, L, hn, hf, &r, msg, sizeof msg)) {
+            printf("bench_navier_stokes --plates K L [h_near h_far]: K in (0.01, 0.9), L > 2/K; %s\n", msg);
+            return 1;
+        }
+        printf("plates k=%.4f L=%.1f h=%.3f/%.3f: %d unknowns, lambda = F/(mu U0) = %.5f (reaction), %.5f (line "
+               "integral), T/(mu U_mean) = %.4f\n",
+               k, L, hn, hf, r.nunk, r.lam_react, r.lam_line, 1.5 * r.lam_react);
+        return 0;
+    }
+    if (argc > 2 && !strcmp(argv[1], "--cavity-p2")) {
+        const double h = atof(argv[2]);
+        ns_cavity_result r;
+        if (!(h > 0.004 && h < 0.5) || ns_case_cavity(NS_EL_P2, h, h, 100, &r, msg, sizeof msg)) {
+            printf("bench_navier_stokes --cavity-p2 H: H in (0.004, 0.5) m; %s\n", msg);
+            return 1;
+        }
+        printf("FF triangles %d unknowns %d factorisations %ld assemble %.4f factor+solve %.4f analysis %.4f "
+               "umin %.6f vmin %.6f vmax %.6f\n",
+               r.nt, r.nunk, r.st.n_numeric, r.st.t_assemble, r.st.t_numeric + r.st.t_solve, r.st.t_symbolic,
+               r.u_min, r.v_min, r.v_max);
+        return 0;
+    }
     snprintf(path, sizeof path, "%s/bench_navier_stokes.csv", dir);
     FILE *csv = fopen(path, "w");
     if (csv) fprintf(csv, "case,element,h,unknowns,error,cpu,assembly,factor,solve,fill\n");

@@ -17,7 +17,7 @@
 #define NSTEP 200
 #define MU 50.0
 
-static pl_world *settling(double core, int element) {
+static pl_world *settling_beta(double core, int element, double beta, int check) {
     pl_world_def wd = pl_default_world_def();
     wd.dt = DT;
     pl_world *w = pl_world_create(&wd);
@@ -45,11 +45,74 @@ static pl_world *settling(double core, int element) {
     d.grade_distance = 0.04;
     d.disc_sides = 64;
     d.element = element;
+    d.force_relaxation = beta;
+    d.stability_every = check;
     if (pl_world_attach_navier_stokes(w, &d) != PL_OK) {
         fprintf(stderr, "%s\n", pl_world_last_error(w));
         pl_world_destroy(&w);
     }
     return w;
+}
+
+static pl_world *settling(double core, int element) { return settling_beta(core, element, 0.3, 50); }
+
+/* The explicit coupling's limit beta (1 + D tau / m) < 2 (porelab/navier_stokes.h), measured on
+   the settling disc (r = 1 cm, rho_P = 2500, mu = 50 Pa s, tau = 2 ms), which is drag-dominated.
+   Translation: Faxen's K = 4 pi mu / (ln(1/k) - 0.9157 + 1.7244 k^2 - 1.7302 k^4) (Happel &
+   Brenner 1965) = 525 N s/m per m gives K tau / m = 1.35; the model's D adds the added mass of
+   the water the disc accelerates in one BDF2 step (3/(2 tau) C_a rho_F pi r^2, C_a >= 1 for a
+   cylinder, larger between walls): D tau / m in [1.35 + 0.6, 1.35 + 1.8]. Rotation: the steady
+   torque on a cylinder, 4 pi mu r^2 omega, against I = m r^2 / 2 gives 8 pi mu tau / m = 3.2
+   (no inviscid added inertia for a circle; the Stokes layer sqrt(nu tau) = r and the walls raise
+   it): D tau / I in [3.2, 1.6 x 3.2]. So beta = 1 and 0.5 are past the limit (rotation), 0.3 is
+   within it; the check refuses beta = 1 naming the body, the motion and a safe beta; with the
+   check off beta = 1 grows from step to step, beta = 0.3 settles. */
+static int test_coupling_limit(void) {
+    pl_world *w = settling_beta(1.0, 0, 1.0, 50);
+    ENSURE(w);
+    ENSURE(pl_world_step(w, 1) == PL_ERR_STATE);
+    const char *msg = pl_world_last_error(w);
+    printf("beta = 1: %s\n", msg);
+    ENSURE(strstr(msg, "body 0") && strstr(msg, "unstable") && strstr(msg, "rotation") &&
+           strstr(msg, "set force_relaxation <="));
+    pl_ns_stats st;
+    ENSURE(pl_world_navier_stokes_stats(w, &st) == PL_OK);
+    const double k = R / B;
+    const double K = 4 * PI * MU / (log(1 / k) - 0.9157 + 1.7244 * k * k - 1.7302 * pow(k, 4));
+    const double mass = 2500 * 64 * 0.5 * R * R * sin(2 * PI / 64);
+    const double s_t = K * DT / mass, s_r = 8 * PI * MU * DT / mass, am = 1.5 * 1000.0 / 2500.0;
+    printf("D tau / m = %.3f (Faxen drag %.3f + displaced water's added mass %.3f = %.3f); D tau / I = %.3f "
+           "(steady torque %.3f)\n",
+           st.coupling_translation, s_t, am, s_t + am, st.coupling_rotation, s_r);
+    ENSURE(st.coupling_translation > s_t + am && st.coupling_translation < s_t + 3 * am);
+    ENSURE(st.coupling_rotation > s_r && st.coupling_rotation < 1.6 * s_r);
+    pl_world_destroy(&w);
+    double growth[2];
+    const double betas[2] = {1.0, 0.3};
+    for (int c = 0; c < 2; c++) {
+        pl_world *u = settling_beta(1.0, 0, betas[c], -1);
+        ENSURE(u);
+        pl_vec2 v[1];
+        double prev = 0, d_early = 0, d_late = 0;
+        int n = 0;
+        for (; n < 30; n++) {
+            if (pl_world_step(u, 1) != PL_OK) break; /* blown up: the disc left the box */
+            pl_world_copy_velocities(u, v, 1);
+            const double dv = fabs(v[0].y - prev);
+            prev = v[0].y;
+            if (n >= 2 && n < 5) d_early = fmax(d_early, dv);
+            if (n >= 26 || (n >= 5 && c == 0)) d_late = fmax(d_late, dv);
+        }
+        growth[c] = n < 30 ? INFINITY : d_late / d_early;
+        printf("beta = %.1f, check off: step-to-step velocity change %.3g m/s (steps 2-4) -> %.3g m/s (%s), "
+               "growth %.3g%s%s\n", betas[c], d_early, d_late, c == 0 ? "steps 5 on" : "steps 26-29", growth[c],
+               n < 30 ? "; stopped: " : "", n < 30 ? pl_world_last_error(u) : "");
+        if (c == 1) ENSURE(n == 30);
+        pl_world_destroy(&u);
+    }
+    ENSURE(growth[0] > 2.0);
+    ENSURE(growth[1] < 0.5);
+    return 0;
 }
 
 static int test_settling_faxen(void) {
@@ -151,6 +214,7 @@ int main(int argc, char **argv) {
     }
     pl_world_destroy(&w);
     RUN(test_refusals);
+    RUN(test_coupling_limit);
     RUN(test_snapshot_and_restart);
     if (argc > 1 && strcmp(argv[1], "long") == 0) RUN(test_settling_faxen);
     return pl_test_report();

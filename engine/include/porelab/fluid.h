@@ -89,7 +89,9 @@ typedef enum pl_fluid_node_field {
     PL_FLUID_PRESSURE = 2,       ///< p, Pa (gauge)
     PL_FLUID_EXCESS_PRESSURE = 3, ///< p - hydrostatic = rho_f g (h - h_ref), Pa; h_ref = mean prescribed head
     PL_FLUID_VELOCITY_NODE_X = 4, ///< fluid velocity x at the field's nodes (resolved models: Stokes), m/s
-    PL_FLUID_VELOCITY_NODE_Y = 5  ///< fluid velocity y at the field's nodes, m/s
+    PL_FLUID_VELOCITY_NODE_Y = 5, ///< fluid velocity y at the field's nodes, m/s
+    PL_FLUID_ELEMENT_MESH = 64    ///< the model's own element mesh (vertices, triangles; values 0) for the
+                                  ///< mesh layer, when it differs from the field's linear sub-triangles
 } pl_fluid_node_field;
 
 typedef enum pl_fluid_element_field {

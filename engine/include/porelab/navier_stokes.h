@@ -69,13 +69,31 @@ typedef struct pl_navier_stokes_def {
     double force_relaxation; ///< beta: the load applied is (1 - beta) previous + beta new (stabilises the
                            ///< explicit coupling against the added-mass instability); 1 = none. Default 0.5
     double remesh_angle;   ///< degrees: mesh nodes follow the cores (relaxation) while the smallest angle stays
-                           ///< above this; below it (or for a new set of cores) gmsh remeshes. 0: remesh
+                           ///< above this (or above 3/4 of the smallest angle of gmsh's last full mesh, when
+                           ///< that is lower); below it (or for a new set of cores) gmsh remeshes. 0: remesh
                            ///< whenever a core moved. Default 20
     int disc_sides;        ///< sides of the polygon that stands for a disc's core; default 32
     int newton_max;        ///< Newton iterations per fluid step before the step is refused; default 20
+    int project;           ///< 1: after the mesh changed (relocation or remesh) the interpolated solution and
+                           ///< BDF2 history are projected onto the discretely divergence-free fields (one
+                           ///< extra factorisation; docs/navier-stokes.md). Default 1
+    int stability_every;   ///< fluid steps between checks of the explicit coupling's limit (below); 0: only
+                           ///< the first fluid step; -1: never (to watch the instability). Default 50
 } pl_navier_stokes_def;
 
-#define PL_NAVIER_STOKES_PARAM_COUNT 21
+/// Stability of the explicit coupling (docs/navier-stokes.md, "Coupling"). The load a grain feels
+/// over a fluid step is the relaxed fluid force of the step before, computed around the grain's
+/// predicted motion. For one grain of mass m whose fluid force responds to its velocity as
+/// dF = -D dv (D per unit length, from the added mass of the fluid it accelerates and from the
+/// drag; the model measures D from its own factorised Jacobian: one extra solve per grain and
+/// direction), the load and velocity obey a two-step recurrence that is stable when
+///
+///     beta (1 + D tau / m) < 2      (and likewise with the moment response and the inertia),
+///
+/// beta = force_relaxation, tau the fluid step. At the first fluid step and every
+/// stability_every fluid steps the model checks every dynamic grain and refuses the step past
+/// the limit with a message naming the grain, D tau / m, the limit and a safe force_relaxation.
+#define PL_NAVIER_STOKES_PARAM_COUNT 23
 extern const pl_param pl_navier_stokes_params[PL_NAVIER_STOKES_PARAM_COUNT];
 extern const int pl_navier_stokes_param_count;
 
@@ -114,6 +132,11 @@ typedef struct pl_ns_stats {
     double min_angle;      ///< smallest angle of the current mesh, degrees
     double nnz_matrix, nnz_lu; ///< entries of the Jacobian and of L + U (last factorisation)
     double t_mesh, t_relocate, t_interp, t_assembly, t_factor, t_solve, t_forces;
+    double t_stability;    ///< the coupling-limit checks (their extra solves)
+    double t_project;      ///< the divergence projections after a mesh change (not in t_assembly, t_factor)
+    double coupling_ratio; ///< largest beta (1 + D tau / m) of the last check (stable below 2)
+    int coupling_body;     ///< the grain it belongs to (-1: none checked)
+    double coupling_translation, coupling_rotation; ///< largest D tau / m and D tau / I of the last check
 } pl_ns_stats;
 pl_status pl_world_navier_stokes_stats(const pl_world *w, pl_ns_stats *out);
 

@@ -18,6 +18,7 @@
 #include "world/model.h"
 #include <math.h>
 #include <stdio.h>
+#include <umfpack.h>
 #include <string.h>
 #include <time.h>
 
@@ -37,6 +38,8 @@ typedef struct pl_ns {
     double *moment;
     int since;
     long steps;
+    double fresh_angle;     /* smallest angle of the last full (gmsh) mesh, degrees */
+    long nfluid;            /* fluid steps solved (state: the counters below are not) */
     /* counters (not state) */
     pl_ns_stats st;
     double seconds;
@@ -101,6 +104,7 @@ pl_status pl_world_attach_navier_stokes(pl_world *w, const pl_navier_stokes_def 
     pl_ns *m = pl_calloc(1, sizeof *m);
     if (!m) return pl__world_error(w, PL_ERR_NOMEM, "navier_stokes: out of memory");
     m->def = *def;
+    m->st.coupling_body = -1;
     st = pl__world_attach(w, &pl_navier_stokes_class, m);
     if (st != PL_OK) pl_free(m);
     return st;
@@ -318,6 +322,7 @@ static pl_status remesh(pl_ns *m, pl_world *w, cores *c) {
     m->st.t_interp += cpu_now() - t0;
     m->sys = ns;
     m->built = 1;
+    m->fresh_angle = ns_mesh_min_angle(&m->sys.mesh);
     adopt_cores(m, c);
     return PL_OK;
 }
@@ -336,6 +341,12 @@ static void adopt_cores(pl_ns *m, cores *c) {
 static int same_topology(const pl_ns *m, const cores *c) {
     return m->built && m->nholes == c->n && !memcmp(m->hole_body, c->body, sizeof(int32_t) * (size_t)c->n) &&
            !memcmp(m->core_off, c->off, sizeof(int32_t) * (size_t)(c->n + 1));
+}
+
+/* The smallest angle relocation may reach: remesh_angle, or 3/4 of the smallest angle of the last
+   gmsh mesh when gmsh itself could not reach remesh_angle (tight gaps between cores). */
+static double ns_relocation_floor(const pl_ns *m) {
+    return fmin(m->def.remesh_angle, 0.75 * m->fresh_angle);
 }
 
 /* Mesh relaxation: the vertices on each core move with the core's rigid motion from the mesh's
@@ -411,7 +422,7 @@ static int relocate(pl_ns *m, const cores *c) {
         const double *p0 = M->xy + 2 * v[0], *p1 = M->xy + 2 * v[1], *p2 = M->xy + 2 * v[2];
         ok = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p2[0] - p0[0]) * (p1[1] - p0[1]) > 0;
     }
-    if (ok && m->def.remesh_angle > 0) ok = ns_mesh_min_angle(M) >= m->def.remesh_angle;
+    if (ok && m->def.remesh_angle > 0) ok = ns_mesh_min_angle(M) >= ns_relocation_floor(m);
     if (!ok || m->def.remesh_angle <= 0) {
         memcpy(M->xy, old, sizeof(double) * 2 * (size_t)nv);
         pl_free(old);
@@ -467,6 +478,105 @@ static pl_status ensure_bodies(pl_ns *m, pl_world *w, int n) {
     return PL_OK;
 }
 
+/* Polar moment of inertia about the centroid, kg m per m thickness. */
+static double body_inertia(const pl_grain_view *g, int i) {
+    if (g->shape[i] == PL_SHAPE_DISC) return 0.5 * g->mass[i] * g->radius[i] * g->radius[i];
+    const int o = g->vert_offset[i], nv = g->vert_count[i];
+    double a2 = 0, j = 0;
+    for (int k = 0; k < nv; k++) {
+        const double ax = g->verts[o + k].x - g->pos[i].x, ay = g->verts[o + k].y - g->pos[i].y;
+        const double bx = g->verts[o + (k + 1) % nv].x - g->pos[i].x, by = g->verts[o + (k + 1) % nv].y - g->pos[i].y;
+        const double c = ax * by - ay * bx;
+        a2 += c;
+        j += c * (ax * ax + ax * bx + bx * bx + ay * ay + ay * by + by * by);
+    }
+    return a2 != 0 ? g->mass[i] * (j / 12.0) / (0.5 * a2) : 0.0;
+}
+
+/* The explicit coupling's limit (porelab/navier_stokes.h). For each dynamic grain and each of
+   its rigid motions (vx, vy, omega), the fluid response D = -dF/dv comes from the factorised
+   Jacobian of the step just solved: a unit change of the prescribed core velocity changes the
+   solution by J^-1 e (e = 1 on the core's Dirichlet rows of that motion; the Dirichlet residual
+   is x - g), whose stress integral is dF. With the load relaxed by beta and applied over the next
+   fluid step tau, F' = (1 - beta) F + beta F_new(v), v' = v + tau F' / m, and F_new responding
+   as -rho_a (v - v_prev) - kappa v (added mass, drag; units of m / tau) the characteristic
+   polynomial z^2 + (beta (1 + rho_a + kappa) - 2) z + 1 - beta (1 + rho_a) has its roots in the
+   unit circle when beta (1 + rho_a) < 2 and kappa beta < 4 - 2 beta (1 + rho_a); both hold
+   when beta (1 + D tau / m) < 2, D tau / m = rho_a + kappa (the Jacobian gives their sum). */
+static pl_status check_coupling(pl_ns *m, pl_world *w, const pl_grain_view *g, double tau) {
+    ns_system *s = &m->sys;
+    const double t0 = cpu_now();
+    const double beta = m->def.force_relaxation;
+    double *e = pl_calloc((size_t)s->nunk, sizeof(double)), *dx = pl_malloc(sizeof(double) * (size_t)s->nunk);
+    if (!e || !dx) {
+        pl_free(e);
+        pl_free(dx);
+        return pl__world_error(w, PL_ERR_NOMEM, "navier_stokes: out of memory");
+    }
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    umfpack_di_defaults(control);
+    double *keep = s->x;
+    double worst = 0, worst_s = 0, s_tr = 0, s_rot = 0;
+    int worst_b = -1, worst_dir = 0;
+    pl_status st = PL_OK;
+    for (int k = 0; k < m->nholes && st == PL_OK; k++) {
+        const int b = m->hole_body[k];
+        if (g->motion[b] != PL_MOTION_DYNAMIC || !g->wants_load[b] || !(g->mass[b] > 0)) continue;
+        const double cx = m->hole_motion[5 * k + 3], cy = m->hole_motion[5 * k + 4];
+        const double inertia = body_inertia(g, b);
+        for (int dir = 0; dir < 3; dir++) {
+            memset(e, 0, sizeof(double) * (size_t)s->nunk);
+            for (int j = 0; j < s->nvel; j++) {
+                if (s->node_tag[j] != NS_TAG_HOLE0 + k) continue;
+                const double rx = s->vxy[2 * j] - cx, ry = s->vxy[2 * j + 1] - cy;
+                e[j] = dir == 0 ? 1.0 : dir == 1 ? 0.0 : -ry;
+                e[s->nvel + j] = dir == 0 ? 0.0 : dir == 1 ? 1.0 : rx;
+            }
+            if (umfpack_di_solve(UMFPACK_A, s->Ap, s->Ai, s->Ax, dx, e, s->numeric, control, info) != UMFPACK_OK) {
+                st = pl__world_error(w, PL_ERR_NUMERIC, "navier_stokes: the coupling check's solve failed");
+                break;
+            }
+            double fx, fy, mz;
+            s->x = dx;
+            ns_system_force_line(s, NS_TAG_HOLE0 + k, m->def.density, cx, cy, &fx, &fy, &mz);
+            s->x = keep;
+            const double D = dir == 0 ? -fx : dir == 1 ? -fy : -mz;
+            const double mass = dir == 2 ? inertia : g->mass[b];
+            if (!(mass > 0)) continue;
+            const double sr = fmax(D, 0.0) * tau / mass, r = beta * (1.0 + sr);
+            if (dir == 2) s_rot = fmax(s_rot, sr);
+            else s_tr = fmax(s_tr, sr);
+            if (r > worst) {
+                worst = r;
+                worst_s = sr;
+                worst_b = b;
+                worst_dir = dir;
+            }
+        }
+    }
+    s->x = keep;
+    pl_free(e);
+    pl_free(dx);
+    m->st.t_stability += cpu_now() - t0;
+    m->st.coupling_ratio = worst;
+    m->st.coupling_body = worst_b;
+    m->st.coupling_translation = s_tr;
+    m->st.coupling_rotation = s_rot;
+    if (st != PL_OK) return st;
+    if (worst >= 2.0) {
+        static const char *const what[3] = {"x velocity", "y velocity", "rotation"};
+        return pl__world_error(w, PL_ERR_STATE,
+                               "navier_stokes: at t = %g s the explicit fluid-grain coupling of body %d is unstable: "
+                               "its fluid force responds to its %s as D tau / %s = %.3g over the fluid step tau = %g "
+                               "s (added mass and drag), so force_relaxation (beta = %g) must satisfy beta (1 + %.3g) "
+                               "< 2, i.e. beta < %.3g; set force_relaxation <= %.2g (a smaller fluid step, "
+                               "solve_every or dt, lowers only the drag part)",
+                               g->time, worst_b, what[worst_dir], worst_dir == 2 ? "I" : "m", worst_s, tau, beta, worst_s,
+                               2.0 / (1.0 + worst_s), floor(1.6 / (1.0 + worst_s) * 100.0) / 100.0);
+    }
+    return PL_OK;
+}
+
 static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, double tau) {
     cores c;
     pl_status st = make_cores(m, w, g, tau, &c);
@@ -474,7 +584,9 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
         cores_free(&c);
         return st;
     }
+    int moved = 0;
     if (!m->built || !cores_equal(m, &c)) {
+        moved = m->built;
         const double t0 = cpu_now();
         if (same_topology(m, &c) && relocate(m, &c) == 0) {
             adopt_cores(m, &c);
@@ -497,6 +609,21 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
     s->fy = g->gravity.y;
     s->convect = 1;
     set_bc(m);
+    if (moved && m->def.project && s->nhist > 0) {
+        /* the interpolated fields onto the discretely divergence-free ones (flux conserving) */
+        const double t0 = cpu_now();
+        const ns_stats keep = s->st;
+        char pmsg[200] = "";
+        double *const X[2] = {s->x1, s->x2};
+        const int rc = ns_system_project_many(s, X, s->nhist > 1 ? 2 : 1, pmsg, sizeof pmsg);
+        /* the Newton start: the projected last solution (x equals x1 after the last step) */
+        memcpy(s->x, s->x1, sizeof(double) * 2 * (size_t)s->nvel);
+        s->st = keep;
+        m->st.t_project += cpu_now() - t0;
+        if (rc)
+            return pl__world_error(w, PL_ERR_NUMERIC, "navier_stokes: at t = %g s, after the mesh changed: %s", g->time,
+                                   pmsg);
+    }
     const int first = s->nhist == 0; /* state, unlike the counters: the first step loads in full */
     if (first) ns_system_push_history(s, 0.0);
     char msg[400] = "";
@@ -507,6 +634,9 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
                                "solve_every or time step, or a finer mesh, may help",
                                g->time, tau, s->nunk, msg);
     m->st.newton_iters += s->st.n_numeric - it0;
+    if (m->def.stability_every >= 0 &&
+        (m->nfluid == 0 || (m->def.stability_every > 0 && m->nfluid % m->def.stability_every == 0)))
+        if ((st = check_coupling(m, w, g, tau)) != PL_OK) return st;
     ns_system_push_history(s, tau);
     const double t0 = cpu_now();
     if ((st = ensure_bodies(m, w, g->n)) != PL_OK) return st;
@@ -532,6 +662,7 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
     pl_free(hit);
     m->st.t_forces += cpu_now() - t0;
     m->st.fluid_steps++;
+    m->nfluid++;
     return PL_OK;
 }
 
@@ -550,7 +681,7 @@ static pl_status ns_advance(void *self, pl_world *w, const pl_grain_view *g, dou
     pl_ns *m = self;
     const double t0 = cpu_now();
     pl_status st = PL_OK;
-    if (m->st.fluid_steps == 0 || m->since >= m->def.solve_every) {
+    if (m->nfluid == 0 || m->since >= m->def.solve_every) {
         st = fluid_step(m, w, g, dt * m->def.solve_every);
         m->since = 0;
     }
@@ -581,8 +712,8 @@ static pl_status ns_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
 typedef struct ns_head {
     uint32_t magic, version;
     int32_t built, nhist, since, nbody, nholes, ncore, nv, nt, ne, nunk, kind;
-    int64_t steps;
-    double tau1;
+    int64_t steps, nfluid;
+    double tau1, fresh_angle;
     pl_navier_stokes_def def;
 } ns_head;
 #define NS_MAGIC 0x4e535431u
@@ -601,13 +732,15 @@ static void pack(const pl_ns *m, packer *k) {
     ns_head h;
     memset(&h, 0, sizeof h);
     h.magic = NS_MAGIC;
-    h.version = 1;
+    h.version = 2;
     h.built = m->built;
     h.since = m->since;
     h.nbody = m->nbody;
     h.nholes = m->nholes;
     h.ncore = m->nholes ? m->core_off[m->nholes] : 0;
     h.steps = m->steps;
+    h.fresh_angle = m->fresh_angle;
+    h.nfluid = m->nfluid;
     h.def = m->def;
     if (m->built) {
         h.nhist = m->sys.nhist;
@@ -673,12 +806,14 @@ static void *get_array(reader *r, size_t bytes) {
 static int unpack(pl_ns *m, const uint8_t *p, size_t n) {
     reader r = {p, n, 0};
     ns_head h;
-    if (get(&r, &h, sizeof h) || h.magic != NS_MAGIC || h.version != 1) return -1;
+    if (get(&r, &h, sizeof h) || h.magic != NS_MAGIC || h.version != 2) return -1;
     if (h.nbody < 0 || h.nholes < 0 || h.ncore < 0 || h.nv < 0 || h.nt < 0 || h.ne < 0 || h.nunk < 0) return -1;
     free_state(m);
     m->def = h.def;
     m->since = h.since;
     m->steps = h.steps;
+    m->fresh_angle = h.fresh_angle;
+    m->nfluid = h.nfluid;
     m->nbody = h.nbody;
     m->force = get_array(&r, sizeof(pl_vec2) * (size_t)h.nbody);
     m->moment = get_array(&r, sizeof(double) * (size_t)h.nbody);
@@ -796,10 +931,23 @@ static int ns_field(const void *self, const pl_world *w, int quantity, pl_vec2 *
     *nt = 0;
     if (!m->built) return 0;
     if (quantity != PL_FLUID_PRESSURE && quantity != PL_NS_FIELD_SPEED && quantity != PL_NS_FIELD_VELOCITY_X &&
-        quantity != PL_NS_FIELD_VELOCITY_Y)
+        quantity != PL_NS_FIELD_VELOCITY_Y && quantity != PL_FLUID_VELOCITY_NODE_X &&
+        quantity != PL_FLUID_VELOCITY_NODE_Y && quantity != PL_FLUID_ELEMENT_MESH)
         return 0;
     const ns_system *s = &m->sys;
     const ns_mesh *M = &s->mesh;
+    if (quantity == PL_FLUID_ELEMENT_MESH) { /* the triangles themselves, for the mesh layer */
+        *nt = M->nt;
+        if (M->nv > cap_nodes || M->nt > cap_tris || !xy || !tri || !value) return M->nv;
+        for (int j = 0; j < M->nv; j++) {
+            xy[j] = (pl_vec2){M->xy[2 * j], M->xy[2 * j + 1]};
+            value[j] = 0.0;
+        }
+        memcpy(tri, M->tri, sizeof(int32_t) * 3 * (size_t)M->nt);
+        return M->nv;
+    }
+    if (quantity == PL_FLUID_VELOCITY_NODE_X) quantity = PL_NS_FIELD_VELOCITY_X;
+    if (quantity == PL_FLUID_VELOCITY_NODE_Y) quantity = PL_NS_FIELD_VELOCITY_Y;
     const int quad = s->kind != NS_EL_MINI;
     const int nn = M->nv + (quad ? M->ne : 0), ntr = quad ? 4 * M->nt : M->nt;
     *nt = ntr;

@@ -220,5 +220,14 @@ int ns_system_locate(const ns_system *s, double x, double y, int hint, double *l
 void ns_system_point(const ns_system *s, const double *X, int t, double l1, double l2, double *u, double *v,
                      double *q);
 double ns_system_flux(const ns_system *s, double ax, double ay, double bx, double by, int npts);
+/* Projects the velocity of X (x, x1 or x2 of this system) onto the discretely divergence-free
+   fields (L2 projection, one factorisation; the Dirichlet nodes keep X's values, X's pressure is
+   kept): used after the solution was interpolated onto a new mesh. 0 ok, -1 (msg). */
+int ns_system_project(ns_system *s, double *X, char *msg, size_t msg_size);
+/* The same for several vectors with one factorisation (X[0]'s Dirichlet values are not needed by
+   the matrix, so the others share it). */
+int ns_system_project_many(ns_system *s, double *const *X, int nx, char *msg, size_t msg_size);
+/* max_i |∫ psi_i div u| / ∫ psi_i over the pressure vertices for the velocity of X, 1/s. */
+double ns_system_div_weak(ns_system *s, double *X);
 
 #endif

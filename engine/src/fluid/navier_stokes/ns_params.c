@@ -37,6 +37,11 @@ const pl_param pl_navier_stokes_params[PL_NAVIER_STOKES_PARAM_COUNT] = {
     {"remesh_angle", NULL, NS_OFF(remesh_angle), PL_PARAM_DOUBLE, "deg", 0, 60, 20,
      "nodes follow the cores while the smallest mesh angle stays above this; else gmsh remeshes (0: always)"},
     {"newton_max", NULL, NS_OFF(newton_max), PL_PARAM_INT, "1", 1, 200, 20, "Newton iterations per fluid step"},
+    {"project", NULL, NS_OFF(project), PL_PARAM_BOOL, "0/1", 0, 1, 1,
+     "1: project the interpolated solution and history onto divergence-free fields after a mesh change"},
+    {"stability_every", NULL, NS_OFF(stability_every), PL_PARAM_INT, "steps", -1, 1e6, 50,
+     "fluid steps between checks of the coupling limit beta (1 + D tau / m) < 2 (0: first fluid step only; "
+     "-1: never, to watch the instability)"},
 };
 const int pl_navier_stokes_param_count = (int)(sizeof pl_navier_stokes_params / sizeof pl_navier_stokes_params[0]);
 

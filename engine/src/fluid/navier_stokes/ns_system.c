@@ -541,3 +541,103 @@ double ns_system_flux(const ns_system *s, double ax, double ay, double bx, doubl
     }
     return sum * L / npts;
 }
+
+/* L2 projection of the velocities of X[0..nx-1] onto the discretely divergence-free fields with
+   each X's own values on the Dirichlet nodes: the linear system of one backward-Euler step of
+   unit length with nu = 0, no convection and no body force, whose history is X itself,
+       ∫ (u - u_X) . phi - q div phi = 0,   ∫ psi div u = 0,
+   one factorisation (with the system's symbolic analysis: the pattern is the step's) and one
+   solve per X. The pressures of X are kept. */
+int ns_system_project_many(ns_system *s, double *const *X, int nx, char *msg, size_t msg_size) {
+    const double nu = s->nu, fx = s->fx, fy = s->fy;
+    const int convect = s->convect;
+    double *keep_x = s->x;
+    const int nv2 = 2 * s->nvel, nq = s->nunk - nv2;
+    double *save = pl_malloc(sizeof(double) * (size_t)(nq + nv2 + 1));
+    if (!save) {
+        snprintf(msg, msg_size, "out of memory");
+        return -1;
+    }
+    double *gsave = save + nq;
+    memcpy(gsave, s->gu, sizeof(double) * (size_t)s->nvel);
+    memcpy(gsave + s->nvel, s->gv, sizeof(double) * (size_t)s->nvel);
+    s->nu = s->fx = s->fy = 0.0;
+    s->convect = 0;
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    umfpack_di_defaults(control);
+    int rc = 0;
+    for (int k = 0; k < nx && !rc; k++) {
+        double *Y = X[k];
+        memcpy(save, Y + nv2, sizeof(double) * (size_t)nq);
+        for (int j = 0; j < s->nvel; j++)
+            if (s->fixed[j]) {
+                s->gu[j] = Y[j];
+                s->gv[j] = Y[s->nvel + j];
+            }
+        s->x = Y;
+        memcpy(s->hu, Y, sizeof(double) * (size_t)nv2);
+        double t0 = cpu_now();
+        assemble(s, 1.0, k == 0, 1);
+        s->st.t_assemble += cpu_now() - t0;
+        if (k == 0 && !s->symbolic) {
+            t0 = cpu_now();
+            rc = umfpack_di_symbolic(s->nunk, s->nunk, s->Ap, s->Ai, s->Ax, &s->symbolic, control, info) != UMFPACK_OK;
+            s->st.t_symbolic += cpu_now() - t0;
+            s->st.n_symbolic++;
+        }
+        if (k == 0 && !rc) {
+            if (s->numeric) umfpack_di_free_numeric(&s->numeric);
+            t0 = cpu_now();
+            rc = umfpack_di_numeric(s->Ap, s->Ai, s->Ax, s->symbolic, &s->numeric, control, info) != UMFPACK_OK;
+            s->st.t_numeric += cpu_now() - t0;
+            s->st.n_numeric++;
+        }
+        if (!rc) {
+            t0 = cpu_now();
+            rc = umfpack_di_solve(UMFPACK_A, s->Ap, s->Ai, s->Ax, s->dx, s->res, s->numeric, control, info) !=
+                 UMFPACK_OK;
+            s->st.t_solve += cpu_now() - t0;
+            s->st.n_solve++;
+        }
+        if (!rc)
+            for (int i = 0; i < nv2; i++) Y[i] -= s->dx[i];
+        memcpy(Y + nv2, save, sizeof(double) * (size_t)nq);
+    }
+    if (rc) snprintf(msg, msg_size, "UMFPACK failed on the divergence projection (%d unknowns)", s->nunk);
+    memcpy(s->gu, gsave, sizeof(double) * (size_t)s->nvel);
+    memcpy(s->gv, gsave + s->nvel, sizeof(double) * (size_t)s->nvel);
+    pl_free(save);
+    s->x = keep_x;
+    s->nu = nu;
+    s->fx = fx;
+    s->fy = fy;
+    s->convect = convect;
+    return rc ? -1 : 0;
+}
+
+int ns_system_project(ns_system *s, double *X, char *msg, size_t msg_size) {
+    return ns_system_project_many(s, &X, 1, msg, msg_size);
+}
+
+/* Largest local mass imbalance of X's velocity: max over the pressure vertices of
+   |∫ psi_i div u| / ∫ psi_i (the mean divergence around vertex i, 1/s). */
+double ns_system_div_weak(ns_system *s, double *X) {
+    double *keep = s->x;
+    s->x = X;
+    memset(s->hu, 0, sizeof(double) * 2 * (size_t)s->nvel);
+    assemble(s, 0.0, 0, 0);
+    s->x = keep;
+    const ns_mesh *M = &s->mesh;
+    double *w = pl_calloc((size_t)M->nv + 1, sizeof(double));
+    if (!w) return -1;
+    for (int t = 0; t < M->nt; t++) {
+        const int32_t *v = M->tri + 3 * t;
+        const double *p0 = M->xy + 2 * v[0], *p1 = M->xy + 2 * v[1], *p2 = M->xy + 2 * v[2];
+        const double a = 0.5 * ((p1[0] - p0[0]) * (p2[1] - p0[1]) - (p2[0] - p0[0]) * (p1[1] - p0[1]));
+        for (int i = 0; i < 3; i++) w[v[i]] += a / 3.0;
+    }
+    double worst = 0;
+    for (int i = 0; i < M->nv; i++) worst = fmax(worst, fabs(s->res[2 * s->nvel + i]) / w[i]);
+    pl_free(w);
+    return worst;
+}
