@@ -1,6 +1,6 @@
 /* Bonds, heat and wear (porelab/bonds.h) as world methods:
  *     w:bond_law{ a = mat, b = mat, law = "brittle"|"plastic"|"damage", kn =, kt =, kr =, rn =, rt =,
- *                 combined =, soften =, tension_only = }
+ *                 combined =, soften =, tension_only =, beam = }
  *     w:bond_touching(gap)            -> number of bonds made (discs at most gap m apart)
  *     w:bond(body1, body2)            -> bond number (1-based)
  *     w:bond_count()                  -> intact, total
