@@ -3,6 +3,7 @@ pl_add_c_test(test_bond_laws SOURCES rock/test_bond_laws.c LABEL physics)
 pl_add_c_test(test_lattice SOURCES rock/test_lattice.c LABEL physics)
 pl_add_c_test(test_rock_state SOURCES rock/test_rock_state.c LABEL physics)
 pl_add_c_test(test_heat_wear SOURCES rock/test_heat_wear.c LABEL physics)
+pl_add_c_test(test_heat_wear_polygon SOURCES rock/test_heat_wear_polygon.c LABEL physics)
 pl_add_c_test(test_bond_beam SOURCES rock/test_bond_beam.c LABEL physics)
 
 # Short versions of the laboratory scenes (scenes/rock): a small specimen must be bonded at
