@@ -25,3 +25,11 @@ pl_rock_cli(brazilian_short ARGS run scenes/rock/brazilian.lua --param size=30 -
                                  --out ${pl_rock_out}/brazilian
   MATCH "bonds intact at rest \\(0 broke\\)"
   MATCH2 "sigma_t = 2P/\\(pi D\\) = [1-9][0-9.]* MPa")
+pl_rock_cli(punch_short ARGS run scenes/rock/punch.lua --param size=30 --param depth=0.1 --no-frames
+                             --out ${pl_rock_out}/punch
+  MATCH "bonds intact \\(0 broke at rest\\)"
+  MATCH2 "punch: peak force [1-9][0-9.e+]* N/m")
+pl_rock_cli(cutting_short ARGS run scenes/rock/cutting.lua --param length=40 --param passes=2 --no-frames
+                               --out ${pl_rock_out}/cutting
+  MATCH "cutting: 2 passes, [0-9.]+ ms of cutting; mean cutting force [1-9]"
+  MATCH2 "tool mass loss [0-9.]*[1-9][0-9.]* g/m")
