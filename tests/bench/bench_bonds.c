@@ -98,7 +98,7 @@ int main(int argc, char **argv) {
         const int nc = pl_world_contact_count(w);
         printf("%-18s %8d %8d %8d %14.4g %7.2fx", names[c], n, pl_world_bond_count(w), nc, rate, base / rate);
         if (c >= 2) /* heat over bonded, wear over heat: ns per contact and step */
-            printf("   +%.3g ns per contact-step", 1e9 * (sec - sec_prev) / ((double)steps * (nc > 0 ? nc : 1)));
+            printf("   %+.3g ns per contact-step", 1e9 * (sec - sec_prev) / ((double)steps * (nc > 0 ? nc : 1)));
         printf("\n");
         sec_prev = sec;
         if (f) fprintf(f, "%s,%d,%d,%d,%.6g\n", names[c], n, pl_world_bond_count(w), pl_world_contact_count(w), rate);
