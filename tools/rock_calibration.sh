@@ -10,12 +10,12 @@ set -eu
 P=${PORELAB:-build/app/porelab}
 OUT=${1:-out/rock_calibration}
 GRID="--grid kt_ratio=0.25,0.5,1 --grid rt_ratio=1,2,4"
-$P sweep scenes/rock/ucs.lua $GRID --run --out "$OUT/ucs" > /dev/null
-$P sweep scenes/rock/brazilian.lua $GRID --run --out "$OUT/brazilian" > /dev/null
+$P sweep scenes/rock/ucs.lua $GRID --grid width=60 --run --out "$OUT/ucs" > /dev/null
+$P sweep scenes/rock/brazilian.lua $GRID --grid size=80 --run --out "$OUT/brazilian" > /dev/null
 $P collect "$OUT/ucs" > /dev/null
 $P collect "$OUT/brazilian" > /dev/null
-$P sweep scenes/rock/ucs.lua --grid rn=1.25e4,2.5e4,5e4 --run --out "$OUT/ucs_rn" > /dev/null
-$P sweep scenes/rock/ucs.lua --grid kn=1e10,2e10,4e10 --run --out "$OUT/ucs_kn" > /dev/null
+$P sweep scenes/rock/ucs.lua --grid rn=1.25e4,2.5e4,5e4 --grid width=60 --run --out "$OUT/ucs_rn" > /dev/null
+$P sweep scenes/rock/ucs.lua --grid kn=1e10,2e10,4e10 --grid width=60 --run --out "$OUT/ucs_kn" > /dev/null
 $P collect "$OUT/ucs_rn" --chart ucs_MPa:rn --chart-out "$OUT/rock_ucs_vs_rn.png" \
   --title "UCS against the bond tensile strength R_n" > /dev/null
 $P collect "$OUT/ucs_kn" --chart E_GPa:kn --chart-out "$OUT/rock_E_vs_kn.png" \

@@ -6,12 +6,13 @@
 -- the specimen diameter. The load against the platen displacement goes to
 -- out/brazilian/brazilian.csv and brazilian_curve.png; the frames show the crack (broken
 -- bonds: red in tension, blue in shear) running along the loaded diameter.
---   porelab run scenes/rock/brazilian.lua
---   porelab run scenes/rock/brazilian.lua --param speed=0.025 --out out/brazilian_half
+--   porelab run scenes/rock/brazilian.lua                 (a quick small disc)
+--   porelab run scenes/rock/brazilian.lua --param size=80   (the 284-disc specimen of docs/rock.md)
+--   porelab run scenes/rock/brazilian.lua --param size=80 --param speed=0.025 --out out/brazilian_half
 local rock = require "porelab.rock"
 
 local P = porelab.params {
-  { name = "size", unit = "mm", value = 80, min = 15, max = 200, doc = "side of the box the discs are compacted in; the specimen diameter comes out about 3/4 of it" },
+  { name = "size", unit = "mm", value = 30, min = 15, max = 200, doc = "side of the box the discs are compacted in; the specimen diameter comes out about 3/4 of it" },
   { name = "speed", unit = "m/s", value = 0.05, min = 0.001, max = 2, doc = "top platen speed" },
   { name = "kn", unit = "N/m", value = 2e10, min = 1e8, max = 1e12, doc = "bond and contact normal stiffness" },
   { name = "kt_ratio", unit = "", value = 0.5, min = 0.05, max = 1, doc = "bond k_t / k_n" },

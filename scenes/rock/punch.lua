@@ -4,11 +4,12 @@
 -- the punch the rock is crushed into a wedge; below the wedge an axial splitting crack opens.
 -- Broken bonds are drawn (red tension, blue shear); the punch force against its penetration
 -- goes to out/punch/punch.csv and punch_curve.png.
---   porelab run scenes/rock/punch.lua
+--   porelab run scenes/rock/punch.lua                  (a quick small specimen)
+--   porelab run scenes/rock/punch.lua --param size=80 --param depth=0.6   (docs/rock.md)
 local rock = require "porelab.rock"
 
 local P = porelab.params {
-  { name = "size", unit = "mm", value = 80, min = 20, max = 200, doc = "side of the box the discs are compacted in (the specimen comes out about 3/4 of it)" },
+  { name = "size", unit = "mm", value = 30, min = 20, max = 200, doc = "side of the box the discs are compacted in (the specimen comes out about 3/4 of it)" },
   { name = "confining", unit = "MPa", value = 1, min = 0, max = 50, doc = "confining stress of the side plates" },
   { name = "speed", unit = "m/s", value = 0.05, min = 0.001, max = 2, doc = "punch speed" },
   { name = "depth", unit = "mm", value = 0.4, min = 0.01, max = 10, doc = "punch penetration at the end of the run" },

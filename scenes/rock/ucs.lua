@@ -4,12 +4,13 @@
 -- stress-strain curve (platen stress against the strain measured inside the specimen) goes to
 -- out/ucs/ucs.csv and out/ucs/ucs_curve.png; the last frame shows the cracks (broken bonds:
 -- red in tension, blue in shear). The run reports E, nu (from 10-50 % of the peak) and the UCS.
---   porelab run scenes/rock/ucs.lua
---   porelab run scenes/rock/ucs.lua --param speed=0.05 --out out/ucs_half   (quasi-static check)
+--   porelab run scenes/rock/ucs.lua                  (a quick 125-disc specimen)
+--   porelab run scenes/rock/ucs.lua --param width=60   (the 706-disc specimen of docs/rock.md)
+--   porelab run scenes/rock/ucs.lua --param width=60 --param speed=0.025 --out out/ucs_half   (quasi-static check)
 local rock = require "porelab.rock"
 
 local P = porelab.params {
-  { name = "width", unit = "mm", value = 60, min = 10, max = 200, doc = "width of the box the discs are compacted in (height 2.2 x width); the specimen comes out about 3/4 as wide" },
+  { name = "width", unit = "mm", value = 25, min = 10, max = 200, doc = "width of the box the discs are compacted in (height 2.2 x width); the specimen comes out about 3/4 as wide" },
   { name = "speed", unit = "m/s", value = 0.05, min = 0.001, max = 2, doc = "top platen speed" },
   { name = "kn", unit = "N/m", value = 2e10, min = 1e8, max = 1e12, doc = "bond and contact normal stiffness" },
   { name = "kt_ratio", unit = "", value = 0.5, min = 0.05, max = 1, doc = "bond k_t / k_n" },

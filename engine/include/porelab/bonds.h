@@ -171,6 +171,11 @@ int pl_world_removed_count(const pl_world *w);
 /// its index, leaves every contact and bond and stops moving; recorded like a worn grain.
 pl_status pl_world_remove_body(pl_world *w, int body);
 
+/// Number of touching contacts of a body after the last step (the contacts pl_world_copy_contacts
+/// lists with a or b == body); 0 for an index out of range. Used by the specimen helpers
+/// (lua/lib/porelab/rock.lua) to keep a servo wall's gain below its stability limit.
+int pl_world_body_touching(const pl_world *w, int body);
+
 #ifdef __cplusplus
 }
 #endif

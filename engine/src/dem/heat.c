@@ -243,3 +243,11 @@ pl_status pl_world_remove_body(pl_world *w, int i) {
     w->energy_initialised = 0;
     return PL_OK;
 }
+
+int pl_world_body_touching(const pl_world *w, int body) {
+    if (body < 0 || body >= w->n) return 0;
+    int c = 0;
+    for (int k = 0; k < w->pair_n; k++)
+        c += w->pairs[k].touching && (w->pairs[k].a == body || w->pairs[k].b == body);
+    return c;
+}

@@ -43,13 +43,8 @@ local function compact(w, box, p, vmax, kn, max_steps, tol)
   for _, s in ipairs(set) do s[3] = p * length(s[1]) end
   local steps, err, calm = 0, math.huge, 0
   while steps < max_steps do
-    local touching = {}
-    for _, c in ipairs(w:contacts()) do
-      touching[c.a] = (touching[c.a] or 0) + 1
-      touching[c.b] = (touching[c.b] or 0) + 1
-    end
     for _, s in ipairs(set) do
-      local n = (touching[s[1]:index()] or 0) + 4
+      local n = w:touching(s[1]) + 4
       local g = math.min(vmax, 0.5 * s[3] / (n * kn * w:dt()))
       s[1]:servo { direction = s[2], force = s[3], gain = g, vmax = vmax }
     end
