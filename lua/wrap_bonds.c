@@ -1,6 +1,6 @@
 /* Bonds, heat and wear (porelab/bonds.h) as world methods:
  *     w:bond_law{ a = mat, b = mat, law = "brittle"|"plastic"|"damage", kn =, kt =, kr =, rn =, rt =,
- *                 combined =, soften =, tension_only = }
+ *                 combined =, soften =, tension_only =, beam = }
  *     w:bond_touching(gap)            -> number of bonds made (discs at most gap m apart)
  *     w:bond(body1, body2)            -> bond number (1-based)
  *     w:bond_count()                  -> intact, total
@@ -13,6 +13,7 @@
  *     w:set_temperature(body, T [, hold])   w:temperature(body)   w:body_heat(body)
  *     w:wear{ remove = true }         w:body_wear(body)   w:removed(body) -> bool, time   w:removed_count()
  *     w:remove(body)                  (carves a disc out: kept index, no contacts or bonds, not drawn)
+ *     w:touching(body)                -> number of touching contacts of the body after the last step
  * Body numbers are the scene's (1-based) like the handles' indices. Numeric fields are read through the
  * parameter tables pl_bond_params / pl_thermal_params (names, ranges and units from there). */
 #include "wrap.h"
@@ -240,6 +241,12 @@ static int b_remove(lua_State *L) {
     return 0;
 }
 
+static int b_touching(lua_State *L) {
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    lua_pushinteger(L, pl_world_body_touching(lw->w, body_arg(L, 2, "touching")));
+    return 1;
+}
+
 static int b_removed_count(lua_State *L) {
     lua_pushinteger(L, pl_world_removed_count(pl_lua_check_world(L, 1)->w));
     return 1;
@@ -261,4 +268,5 @@ const luaL_Reg pl_lua_bond_methods[] = {{"bond_law", b_bond_law},
                                         {"removed", b_removed},
                                         {"removed_count", b_removed_count},
                                         {"remove", b_remove},
+                                        {"touching", b_touching},
                                         {NULL, NULL}};

@@ -406,6 +406,8 @@ void pl_draw_bonds(pl_draw_list *dl, const pl_render_scene *s) {
         /* the crack: across the bond through its point, as long as the smaller disc */
         const double dx = B->position.x - A->position.x, dy = B->position.y - A->position.y, d = hypot(dx, dy);
         if (!(d > 0)) continue;
+        /* grains flown apart (a chip): the crack has opened into free space, nothing to draw */
+        if (d - A->radius - B->radius > fmin(A->radius, B->radius)) continue;
         const double h = 0.9 * fmin(A->radius, B->radius);
         const pl_vec2 t = {-dy / d * h, dx / d * h};
         const pl_vec2 p0 = {b->point.x - t.x, b->point.y - t.y}, p1 = {b->point.x + t.x, b->point.y + t.y};

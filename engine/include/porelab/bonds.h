@@ -20,7 +20,8 @@
 ///   S about the centres).
 /// Laws (per material pair, pl_world_set_bond_law):
 ///   brittle (seed 002 §3.1, eqs. 45-50): N = k_n u_n, S = k_t u_t, M = k_r theta; breaks
-///     when N > R_n or |S| > R_t (separate), or (max(N,0)/R_n)^2 + (S/R_t)^2 > 1 (combined).
+///     when N > R_n or |S| > R_t (separate), or (max(N,0)/R_n)^2 + (S/R_t)^2 > 1 (combined);
+///     with beam = 1 the tension is N + 3|M|/R (Potyondy & Cundall 2004: N/A + |M|R/I).
 ///   plastic (§3.2): elastic up to R_n (R_t), then linear softening of the yield force,
 ///     R(kappa) = R_n (1 - kappa/u_f), kappa the accumulated plastic opening (slip), u_f =
 ///     soften x R_n/k_n; unloading elastic; breaks when kappa reaches u_f. Compression elastic.
@@ -59,11 +60,17 @@ typedef struct pl_bond_def {
     double soften;        ///< plastic, damage: u_f / u_e, the opening at failure over the elastic
                           ///< limit (> 1; the area under the curve is R u_f / 2). Default 5.
     int tension_only;     ///< damage: 1 = only tension damages, shear is brittle at R_t; default 0
+    int beam;             ///< brittle: 1 = the moment enters the strength (Potyondy & Cundall 2004,
+                          ///< eq. 9): the bond is a beam of width 2R (R = min(r_a, r_b)), area
+                          ///< A = 2R, inertia I = (2R)^3/12 per metre; it breaks when
+                          ///< sigma = N/A + |M| R / I > R_n / A, i.e. N + 3|M|/R > R_n (tension,
+                          ///< or with `combined` this effective tension enters the ellipse), or
+                          ///< tau = |S|/A > R_t / A. Needs kr > 0 to matter. Default 0.
 } pl_bond_def;
 
 pl_bond_def pl_default_bond_def(void);
 /// Parameter table of pl_bond_def (the numeric fields; `law` is given by name in Lua).
-#define PL_BOND_PARAM_COUNT 8
+#define PL_BOND_PARAM_COUNT 9
 extern const pl_param pl_bond_params[PL_BOND_PARAM_COUNT];
 
 /// Sets the bond law of the material pair (both orders). Bonds created afterwards use it;
@@ -163,6 +170,11 @@ int pl_world_removed_count(const pl_world *w);
 /// Removes a disc between steps as wear does (to carve a specimen out of a packing): it keeps
 /// its index, leaves every contact and bond and stops moving; recorded like a worn grain.
 pl_status pl_world_remove_body(pl_world *w, int body);
+
+/// Number of touching contacts of a body after the last step (the contacts pl_world_copy_contacts
+/// lists with a or b == body); 0 for an index out of range. Used by the specimen helpers
+/// (lua/lib/porelab/rock.lua) to keep a servo wall's gain below its stability limit.
+int pl_world_body_touching(const pl_world *w, int body);
 
 #ifdef __cplusplus
 }

@@ -58,7 +58,7 @@ static double plastic_component(double k, double R, double soften, double u, dou
     return k * (u - *up);
 }
 
-void pl__bond_law(const pl_bond_def *L, pl_bond *b, double un, double ut, double rot, pl_bond_eval *e) {
+void pl__bond_law(const pl_bond_def *L, pl_bond *b, double un, double ut, double rot, double hw, pl_bond_eval *e) {
     memset(e, 0, sizeof *e);
     const double kn = L->kn, kt = L->kt, kr = L->kr;
     double N = 0, S = 0, en = 0, es = 0;
@@ -104,20 +104,24 @@ void pl__bond_law(const pl_bond_def *L, pl_bond *b, double un, double ut, double
         }
         break;
     }
-    default: /* brittle */
+    default: { /* brittle */
         N = kn * un;
         S = kt * ut;
         en = 0.5 * N * un;
         es = 0.5 * S * ut;
+        /* beam: the largest normal stress of the bond section, N/A + |M| R/I with A = 2R,
+           I = (2R)^3/12, times A: N + 3|M|/R (Potyondy & Cundall 2004) */
+        const double Ne = L->beam && hw > 0 ? N + 3 * fabs(kr * rot) / hw : N;
         if (L->combined) {
-            const double x = (N > 0 ? N : 0) / L->rn, y = S / L->rt;
+            const double x = (Ne > 0 ? Ne : 0) / L->rn, y = S / L->rt;
             if (x * x + y * y > 1) broke = PL_BOND_BROKEN_COMBINED;
-        } else if (N > L->rn) {
+        } else if (Ne > L->rn) {
             broke = PL_BOND_BROKEN_TENSION;
         } else if (fabs(S) > L->rt) {
             broke = PL_BOND_BROKEN_SHEAR;
         }
         break;
+    }
     }
     const double M = kr * rot;
     const double er = 0.5 * M * rot;
@@ -349,7 +353,7 @@ void pl__bond_forces(pl_world *w, double dt) {
         q->rot += (om[b] - om[a]) * dt;
         /* law */
         pl_bond_eval e;
-        pl__bond_law(&w->bond_laws[q->law].def, q, d - q->d0, q->ut, q->rot, &e);
+        pl__bond_law(&w->bond_laws[q->law].def, q, d - q->d0, q->ut, q->rot, fmin(ra, rb), &e);
         w->e_fracture += e.released;
         if (e.broke) {
             break_bond(w, q, e.broke);

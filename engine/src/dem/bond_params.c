@@ -13,6 +13,7 @@ const pl_param pl_bond_params[PL_BOND_PARAM_COUNT] = {
     R("combined", combined, BOOL, "0/1", 0, 1, 0, "brittle: elliptic criterion (N/R_n)^2 + (S/R_t)^2 > 1"),
     R("soften", soften, DOUBLE, "1", 1.000001, 1e6, 5, "plastic, damage: opening at failure / elastic limit u_f/u_e"),
     R("tension_only", tension_only, BOOL, "0/1", 0, 1, 0, "damage: only tension damages (shear brittle at R_t)"),
+    R("beam", beam, BOOL, "0/1", 0, 1, 0, "brittle: the moment enters the strength, N + 3|M|/R > R_n (Potyondy-Cundall)"),
 };
 #undef R
 #define T(lua, field, unit, lo, hi, def, doc) \

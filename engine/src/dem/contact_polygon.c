@@ -343,6 +343,7 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     p->normal = n;
     p->point = g.s;
     p->touching = 1;
+    if (w->heat_on) p->pad = (uint8_t)(smax > 0 && fabs(fs) >= smax * (1 - 1e-12)); /* sliding, read by heat.c */
     /* stored energy: the Winkler foundation's (Y / 2 l_char) int d^2 dx for polygon overlaps
      * (equal to int F_el d(delta) for flat, tilted-flat and corner contacts); for a disc, whose
      * overlap is not a polygon, int F_el d(delta) for an overlap growing as A ~ delta^q with the

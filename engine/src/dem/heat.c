@@ -130,14 +130,17 @@ pl_status pl__heat_wear(pl_world *w, double dt) {
     /* contacts: friction heat, wear, conduction through the overlap */
     for (int k = 0; k < w->pair_n; k++) {
         const pl_pair *p = &w->pairs[k];
-        if (!p->touching || (p->kind != PL_PAIR_DISC_DISC && p->kind != PL_PAIR_DISC_SEGMENT)) continue;
+        if (!p->touching || p->kind == PL_PAIR_NONE) continue;
         const int a = p->a, b = p->b;
         const pl_pair_params *pp = &w->pair_params[p->params];
         const pl_vec2 n = p->normal, t = {-n.y, n.x};
         const pl_vec2 va = point_velocity(w, a, p->point), vb = point_velocity(w, b, p->point);
         const double vt = (vb.x - va.x) * t.x + (vb.y - va.y) * t.y;
+        const int disc = p->kind == PL_PAIR_DISC_DISC || p->kind == PL_PAIR_DISC_SEGMENT;
+        /* discs: the Coulomb cap mu k_n overlap + c reached; polygons (seed 004 area law): the
+           contact marks it (p->pad, set in contact_polygon.c while heat is on) */
         const double smax = pp->friction * pp->kn * p->overlap + pp->cohesion;
-        const int sliding = fabs(p->fs) >= smax * (1 - 1e-12) && smax > 0;
+        const int sliding = disc ? fabs(p->fs) >= smax * (1 - 1e-12) && smax > 0 : p->pad != 0;
         const pl_thermal_def *ta = thermal_of(w, w->material[a]), *tb = thermal_of(w, w->material[b]);
         if (sliding) {
             const double Q = fabs(p->ft * vt) * dt * alpha; /* J this step */
@@ -148,6 +151,17 @@ pl_status pl__heat_wear(pl_world *w, double dt) {
                 if (ta->wear > 0) w->wear[a] += ta->wear * s / pl__hardness(ta, w->temperature[a]);
                 if (tb->wear > 0) w->wear[b] += tb->wear * s / pl__hardness(tb, w->temperature[b]);
             }
+        }
+        if ((p->kind == PL_PAIR_POLY_DISC || p->kind == PL_PAIR_POLY_POLY) && ta->conductivity > 0 &&
+            tb->conductivity > 0 && p->overlap > 0) {
+            /* polygons: the contact width is the overlap area over its depth */
+            const double d = hypot(w->pos[b].x - w->pos[a].x, w->pos[b].y - w->pos[a].y);
+            const double H = conductance(ta->conductivity, tb->conductivity, p->area_prev / p->overlap, d);
+            const double f = H * (w->temperature[b] - w->temperature[a]) * dt;
+            q[a] += f;
+            q[b] -= f;
+            hs[a] += H;
+            hs[b] += H;
         }
         if (p->kind == PL_PAIR_DISC_DISC && ta->conductivity > 0 && tb->conductivity > 0) {
             const double ra = w->radius[a], rb = w->radius[b];
@@ -228,4 +242,12 @@ pl_status pl_world_remove_body(pl_world *w, int i) {
     if (!(w->def.dt > 0)) w->dt = 0;
     w->energy_initialised = 0;
     return PL_OK;
+}
+
+int pl_world_body_touching(const pl_world *w, int body) {
+    if (body < 0 || body >= w->n) return 0;
+    int c = 0;
+    for (int k = 0; k < w->pair_n; k++)
+        c += w->pairs[k].touching && (w->pairs[k].a == body || w->pairs[k].b == body);
+    return c;
 }

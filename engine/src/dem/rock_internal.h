@@ -43,10 +43,11 @@ typedef struct pl_bond_eval {
     int broke;             /* pl_bond_state of the break, 0 when still intact */
 } pl_bond_eval;
 
-/* Evaluates law L for opening un, slip ut and rotation rot (total, since creation), updating
+/* Evaluates law L for opening un, slip ut and rotation rot (total, since creation) of a bond of
+   half width hw (m, min(r_a, r_b): the beam criterion's R), updating
    the law's history in b (up_*, kap_*, om_*) and b->n, s, m, un, elastic, dissipated. Does not
    change b->state: the caller breaks the bond when e->broke != 0 (seed 002 §3, docs/rock.md). */
-void pl__bond_law(const pl_bond_def *L, pl_bond *b, double un, double ut, double rot, pl_bond_eval *e);
+void pl__bond_law(const pl_bond_def *L, pl_bond *b, double un, double ut, double rot, double hw, pl_bond_eval *e);
 
 /* Hardness at temperature T (seed 002 §4.2, docs/rock.md): H_0 max(h_min, 1 - beta (T - t_ref)). */
 static inline double pl__hardness(const pl_thermal_def *d, double T) {
