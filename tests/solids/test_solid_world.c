@@ -175,7 +175,10 @@ static int test_hash_resume(void) {
     void *bytes = NULL;
     size_t len = 0;
     ENSURE(snap && pl_world_save_state(a.w, &bytes, &len) == PL_OK);
-    ENSURE(pl_world_step(a.w, 3000) == PL_OK);
+    if (pl_world_step(a.w, 3000) != PL_OK) {
+        fprintf(stderr, "%s\n", pl_world_last_error(a.w));
+        return 1;
+    }
     const uint64_t h_ref = pl_world_state_hash(a.w);
     ENSURE(pl_world_restore(a.w, snap) == PL_OK);
     ENSURE(pl_world_step(a.w, 3000) == PL_OK);

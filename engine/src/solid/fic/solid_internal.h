@@ -4,7 +4,7 @@
  * contact of discs with the boundary edges. The model class (solid_model.c) owns one pl_sf and
  * feeds it the grain view; the tests drive a pl_sf directly. docs/solids.md gives the equations.
  *
- * State (hashed, saved): x, v, p, pi, stress s and pressure pe of each integration point,
+ * State (hashed, saved): x, v, p, pi, gv, stress s and pressure pe of each integration point,
  * plastic strain, f_prev, energy tallies, time, step. Input: X, conn, material, boundary
  * conditions. Derived (rebuilt): masses, tau, element critical steps, the pressure factor. */
 #ifndef PL_SOLID_INTERNAL_H
@@ -64,6 +64,7 @@ typedef struct pl_sf {
     /* state */
     double *x, *v;       /* 2 nn current positions, half-step velocities */
     double *p, *pi;      /* nn nodal pressure (FIC), 2 nn projected gradient */
+    double *gv;          /* nn FIC: accumulated int N_a d(eps_v) over the steps (G^T u) */
     double *s;           /* 4 per ip: deviatoric stress xx, yy, zz, xy (Pa) */
     double *pe;          /* per ip: element pressure (plain, Q1/P0), Pa */
     double *ep;          /* 4 per ip: plastic strain xx, yy, zz, xy (tensor) */

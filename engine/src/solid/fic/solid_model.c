@@ -392,6 +392,7 @@ static int state_arrays(const pl_sf *s, sd_arrays *a) {
     a[k++] = (sd_arrays){s->v, 2 * N};
     a[k++] = (sd_arrays){s->p, N};
     a[k++] = (sd_arrays){s->pi, 2 * N};
+    a[k++] = (sd_arrays){s->gv, N};
     a[k++] = (sd_arrays){s->f_prev, 2 * N};
     a[k++] = (sd_arrays){s->s, 4 * I};
     a[k++] = (sd_arrays){s->pe, I};
@@ -423,7 +424,7 @@ static void *sd_snapshot(const void *self, size_t *bytes) {
         if (bytes) *bytes = sizeof *z * 2;
         return z;
     }
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     size_t tot = 2 * sizeof(int64_t) + SD_NSCAL * sizeof(double);
     for (int k = 0; k < na; k++) tot += a[k].n * sizeof(double);
@@ -465,7 +466,7 @@ static pl_status sd_restore(void *self, pl_world *w, const void *snap) {
     memcpy(sc, buf + off, sizeof sc);
     off += sizeof sc;
     set_scalars(m, sc);
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     for (int k = 0; k < na; k++) {
         memcpy(a[k].ptr, buf + off, a[k].n * sizeof(double));
@@ -493,7 +494,7 @@ static pl_status sd_save(const void *self, pl_image *img) {
     double sc[SD_NSCAL];
     scalars(m, sc);
     st = pl__image_put(img, sc, sizeof sc);
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     for (int k = 0; k < na && st == PL_OK; k++) st = pl__image_put_array(img, a[k].ptr, sizeof(double), a[k].n);
     return st;
@@ -515,7 +516,7 @@ static pl_status sd_load(void *self, pl_world *w, pl_image *img) {
     if (!m->sf) return PL_OK;
     double sc[SD_NSCAL];
     st = pl__image_get(img, sc, sizeof sc);
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     for (int k = 0; k < na && st == PL_OK; k++) st = pl__image_get_array(img, a[k].ptr, sizeof(double), a[k].n);
     if (st != PL_OK) return pl__world_error(w, PL_ERR_IO, "load: the image's solid section is damaged");

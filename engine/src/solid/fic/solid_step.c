@@ -238,6 +238,7 @@ uint64_t pl_sf_hash(const pl_sf *s, uint64_t h) {
     h = pl_hash_bytes(h, s->v, sizeof *s->v * 2 * N);
     h = pl_hash_bytes(h, s->p, sizeof *s->p * N);
     h = pl_hash_bytes(h, s->pi, sizeof *s->pi * 2 * N);
+    h = pl_hash_bytes(h, s->gv, sizeof *s->gv * N);
     h = pl_hash_bytes(h, s->f_prev, sizeof *s->f_prev * 2 * N);
     h = pl_hash_bytes(h, s->s, sizeof *s->s * 4 * I);
     h = pl_hash_bytes(h, s->pe, sizeof *s->pe * I);
