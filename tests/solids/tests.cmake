@@ -13,6 +13,8 @@ if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1")
 endif()
 if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1")
   pl_add_c_test(test_solid_plastic SOURCES ${PL_TEST_DIR}/solids/test_solid_plastic.c LABEL solids TIMEOUT 60)
+  add_test(NAME test_solid_punch COMMAND test_solid_plastic punch)
+  set_tests_properties(test_solid_punch PROPERTIES LABELS "solids;long" TIMEOUT 900)
 endif()
 # Scenes of scenes/solids/ run to their end (imperative scripts with their own asserts).
 if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1" AND TARGET porelab)
