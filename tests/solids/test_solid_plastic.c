@@ -195,7 +195,7 @@ static int punch_case(int form, int n, double *q, double *q_push) {
         if (t > t_push - t_ramp && t < t_push) v = speed * (t_push - t) / t_ramp;
         for (int k = 0; k < s->sets[punch].n; k++) s->vpres[2 * s->sets[punch].nodes[k] + 1] = -v;
         ENSURE(pl_sf_step(s, dt, NULL) == PL_OK);
-        if (fabs(s->time - 0.8 * t_push) < dt / 2) *q_push = s->sets[punch].reaction[1] / 1.0;
+        if (fabs(s->time - 0.8 * t_push) < dt / 2) *q_push = -s->sets[punch].reaction[1] / 1.0;
     }
     *q = -s->sets[punch].reaction[1] / 1.0; /* compression: the support pushes down */
     pl_sf_destroy(s);

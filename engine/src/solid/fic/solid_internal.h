@@ -144,9 +144,18 @@ typedef struct pl_sf_contact_out {
     double overlap;      /* largest penetration, m */
     int touching;
     double e_dashpot, e_friction; /* dissipated this step, J/m */
+    double spring;       /* energy in the contact springs now, J/m (polygons) */
 } pl_sf_contact_out;
 void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, double r, double dt,
                         double *fsolid, pl_sf_contact_out *out);
+
+/* Convex polygon grain (vertices vert, counter-clockwise, world coordinates; centroid c)
+   against the boundary edges: each grain vertex inside the solid is pushed out through the
+   nearest edge (penetration along its outward normal, reaction spread by the edge shape
+   functions) and each convex corner node of the solid inside the grain through the grain's
+   nearest edge; the same spring-dashpot and friction as the discs. */
+void pl_sf_polygon_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, const pl_vec2 *vert, int nv,
+                           double dt, double *fsolid, pl_sf_contact_out *out);
 
 /* Linear triangle with nodes n of the coordinates xy: area (positive counter-clockwise) and
    shape-function gradients b = dN/dx, c = dN/dy. */

@@ -308,16 +308,23 @@ static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, dou
     }
     for (int k = 0; k < nc; k++) {
         const int i = m->cand[k];
-        if (g->shape[i] != PL_SHAPE_DISC) continue;
         pl_sf_contact_out o;
-        pl_sf_disc_contact(s, g->pos[i], g->vel[i], g->omega[i], g->radius[i], dt, s->fc, &o);
+        if (g->shape[i] == PL_SHAPE_DISC) {
+            pl_sf_disc_contact(s, g->pos[i], g->vel[i], g->omega[i], g->radius[i], dt, s->fc, &o);
+            o.spring = 0.5 * s->def.contact_stiffness * o.overlap * o.overlap;
+        } else if (g->shape[i] == PL_SHAPE_POLYGON && g->vert_count[i] >= 3) {
+            pl_sf_polygon_contact(s, g->pos[i], g->vel[i], g->omega[i], &g->verts[g->vert_offset[i]],
+                                  g->vert_count[i], dt, s->fc, &o);
+        } else {
+            continue;
+        }
         if (!o.touching) continue;
         m->cf[i] = (pl_vec2){o.fx, o.fy};
         m->cm[i] = o.m;
         m->contact_total.x -= o.fx;
         m->contact_total.y -= o.fy;
         m->e_contact_diss += o.e_dashpot + o.e_friction;
-        m->e_contact_spring += 0.5 * s->def.contact_stiffness * o.overlap * o.overlap;
+        m->e_contact_spring += o.spring;
     }
     pl_status st = pl_sf_step(s, dt, s->fc);
     m->seconds += pl_clock_seconds() - t0;
@@ -351,8 +358,10 @@ static double contact_dt(const pl_solid *m, const pl_grain_view *g, int *what) {
     if (!(k > 0)) return INFINITY;
     for (int q = 0; q < s->nbedge; q++) mmin = fmin(mmin, s->m[s->bedge[2 * q]]);
     for (int i = 0; i < g->n; i++)
-        if (g->shape[i] == PL_SHAPE_DISC && g->motion[i] == PL_MOTION_DYNAMIC && g->mass[i] < mmin) {
-            mmin = g->mass[i];
+        if ((g->shape[i] == PL_SHAPE_DISC || g->shape[i] == PL_SHAPE_POLYGON) && g->motion[i] == PL_MOTION_DYNAMIC &&
+            g->mass[i] / (g->shape[i] == PL_SHAPE_POLYGON ? 2 : 1) < mmin) {
+            /* a polygon may rest on two vertices at once: two springs on its mass */
+            mmin = g->mass[i] / (g->shape[i] == PL_SHAPE_POLYGON ? 2 : 1);
             *what = 1;
         }
     const double c = s->def.contact_damping, zeta = c / (2 * sqrt(k * mmin));
