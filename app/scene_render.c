@@ -1,6 +1,7 @@
 #include "scene_render.h"
 #include "lua_util.h"
 #include "porelab/fluid.h"
+#include "porelab/solid.h"
 #include "render/colormap.h"
 
 #include <math.h>
@@ -189,11 +190,14 @@ static void read_field_options(lua_State *L, pl_render_options *o)
     read_range(L, "fluid_range", &o->fluid_min, &o->fluid_max);
     /* Names in the order of pl_fluid_node_field, so the option index is the enum value. */
     static const char *const fields[] = {"head", "pressure_head", "pressure",
-                                         "excess_pressure", NULL};
+                                         "excess_pressure", "mises", "plastic_strain",
+                                         "solid_pressure", "displacement", NULL};
     _Static_assert(PL_FLUID_HEAD == 0 && PL_FLUID_PRESSURE_HEAD == 1 &&
                        PL_FLUID_PRESSURE == 2 && PL_FLUID_EXCESS_PRESSURE == 3,
                    "fluid field names follow pl_fluid_node_field");
     o->fluid_field = pl_lua_field_option(L, 2, fn, "fluid_field", o->fluid_field, fields);
+    if (o->fluid_field >= 4 && o->fluid_field < 8) /* the solid's fields (porelab/solid.h) */
+        o->fluid_field += PL_SOLID_FIELD_MISES - 4;
     o->isoline_count = pl_lua_field_int(L, 2, fn, "isolines", o->isoline_count);
     PL_LUA_CHECK(L, o->isoline_count >= 1 && o->isoline_count <= 100, fn, "isolines",
                  "in 1..100", o->isoline_count);

@@ -61,13 +61,14 @@ typedef struct pl_solid_def {
 extern const pl_param pl_solid_params[PL_SOLID_PARAM_COUNT];
 pl_solid_def pl_default_solid_def(void);
 
-/// Field quantities of the solid (pl_world_field_sample / the renderer's field layers),
-/// averaged to the nodes.
+/// Field quantities of the solid (pl_world_field_sample / the renderer's field layers,
+/// render{ fluid_field = "mises" | "plastic_strain" | "solid_pressure" | "displacement" }),
+/// averaged to the nodes. (16-18 are the Navier-Stokes fields.)
 enum {
-    PL_SOLID_FIELD_MISES = 16,          ///< von Mises stress, Pa
-    PL_SOLID_FIELD_PLASTIC_STRAIN = 17, ///< equivalent plastic strain, 1
-    PL_SOLID_FIELD_PRESSURE = 18,       ///< mean stress (tension positive), Pa
-    PL_SOLID_FIELD_DISPLACEMENT = 19    ///< displacement magnitude, m
+    PL_SOLID_FIELD_MISES = 32,          ///< von Mises stress, Pa
+    PL_SOLID_FIELD_PLASTIC_STRAIN = 33, ///< equivalent plastic strain, 1
+    PL_SOLID_FIELD_PRESSURE = 34,       ///< mean stress (tension positive), Pa
+    PL_SOLID_FIELD_DISPLACEMENT = 35    ///< displacement magnitude, m
 };
 
 /// Energy ledger of the solid (J per m thickness). Balance: kinetic + internal - external +
