@@ -10,7 +10,7 @@
  *     w:solid_initial_velocity{ box = {...}, vx = 0, vy = 0 }           -> node count
  *     w:solid_reaction(set) -> fx, fy        w:solid_displacement(x, y) -> ux, uy
  *     w:solid_energy() -> {kinetic, elastic, internal, external, damping, plastic, contact}
- *     w:solid_info() -> {nodes, elements, critical_dt}
+ *     w:solid_info() -> {nodes, elements, critical_dt, solid_seconds, contact_seconds}
  *     w:solid_extremes() -> mises_max, plastic_strain_max
  *     w:solid_contact_force() -> fx, fy (of the grains on the solid)
  * The def fields come from the parameter table (pl_solid_params); formulation may also be
@@ -220,7 +220,13 @@ static int s_energy(lua_State *L) {
 
 static int s_info(lua_State *L) {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
-    lua_createtable(L, 0, 3);
+    lua_createtable(L, 0, 5);
+    double fe_s, ct_s;
+    pl_world_solid_cost(lw->w, &fe_s, &ct_s);
+    lua_pushnumber(L, fe_s);
+    lua_setfield(L, -2, "solid_seconds");
+    lua_pushnumber(L, ct_s);
+    lua_setfield(L, -2, "contact_seconds");
     lua_pushinteger(L, pl_world_solid_node_count(lw->w));
     lua_setfield(L, -2, "nodes");
     lua_pushinteger(L, pl_world_solid_element_count(lw->w));

@@ -113,6 +113,9 @@ int pl_world_solid_element_count(const pl_world *w);
 /// Critical step of the solid, s (2/omega_max over the elements), and the element giving it.
 double pl_world_solid_critical_dt(const pl_world *w, int *element);
 pl_status pl_world_solid_energy(const pl_world *w, pl_solid_energy *out);
+/// Time spent (s, monotonic clock) in the solid since it was attached: the finite elements
+/// (step, pressure, stress update) and the grain-edge contact (search and forces).
+void pl_world_solid_cost(const pl_world *w, double *solid_seconds, double *contact_seconds);
 /// Largest von Mises stress (Pa) and equivalent plastic strain over the integration points.
 pl_status pl_world_solid_extremes(const pl_world *w, double *mises_max, double *plastic_max);
 /// Total contact force of the grains on the solid (N/m), last step.

@@ -28,6 +28,7 @@ typedef struct pl_solid {
     double e_contact_spring; /* energy in the contact springs now, J/m */
     double e_contact_diss;   /* dissipated by dashpots and friction so far, J/m (state) */
     double seconds;
+    double seconds_contact; /* part of seconds: the grain-edge contact search and forces */
     long calls;
 } pl_solid;
 
@@ -216,6 +217,12 @@ double pl_world_solid_critical_dt(const pl_world *w, int *element) {
     return m && m->sf ? m->sf->dt_crit : INFINITY;
 }
 
+void pl_world_solid_cost(const pl_world *w, double *solid_seconds, double *contact_seconds) {
+    const pl_solid *m = get(w);
+    *solid_seconds = m ? m->seconds - m->seconds_contact : 0;
+    *contact_seconds = m ? m->seconds_contact : 0;
+}
+
 pl_status pl_world_solid_energy(const pl_world *w, pl_solid_energy *out) {
     const pl_solid *m = get(w);
     if (!m || !m->sf) return PL_ERR_STATE;
@@ -326,6 +333,8 @@ static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, dou
         m->e_contact_diss += o.e_dashpot + o.e_friction;
         m->e_contact_spring += o.spring;
     }
+    const double t1 = pl_clock_seconds();
+    m->seconds_contact += t1 - t0;
     pl_status st = pl_sf_step(s, dt, s->fc);
     m->seconds += pl_clock_seconds() - t0;
     if (st != PL_OK) return pl__world_error(w, st, "%s", s->err);
