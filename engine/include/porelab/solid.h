@@ -93,6 +93,10 @@ int pl_world_solid_annulus(pl_world *w, double cx, double cy, double ri, double 
                            int nt);
 /// Unstructured triangles (gmsh Frontal-Delaunay) in a simple polygon (CCW), element size h.
 int pl_world_solid_polygon(pl_world *w, const pl_vec2 *verts, int n, double h);
+/// A part read from a gmsh .msh file (gmsh's C API; plane mesh, z = 0): its 3-node triangles,
+/// or its 4-node quadrilaterals for Q1/P0. The file name must end in .msh; an unreadable,
+/// damaged or non-plane file is refused with the file and the reason.
+int pl_world_solid_mesh_file(pl_world *w, const char *path);
 /// Fixes the components in mask (1 x, 2 y, 3 both) of the nodes whose reference position is in
 /// the box. Returns the set index (for reactions) or a status.
 int pl_world_solid_fix(pl_world *w, double x0, double y0, double x1, double y1, int mask);

@@ -128,6 +128,15 @@ int pl_world_solid_polygon(pl_world *w, const pl_vec2 *verts, int n, double h) {
     return add_mesh(w, &mesh, st, msg);
 }
 
+int pl_world_solid_mesh_file(pl_world *w, const char *path) {
+    pl_solid *m = need(w, "solid_mesh");
+    if (!m) return PL_ERR_STATE;
+    pl_sf_mesh mesh;
+    char msg[320];
+    pl_status st = pl_sf_mesh_read(path, m->def.formulation == PL_SOLID_Q1P0, &mesh, msg, sizeof msg);
+    return add_mesh(w, &mesh, st, msg);
+}
+
 static pl_sf *need_sf(pl_world *w, const char *fn) {
     pl_solid *m = need(w, fn);
     if (!m) return NULL;
