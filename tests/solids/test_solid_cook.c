@@ -2,10 +2,10 @@
  * benchmark: the tapered panel with corners (0,0), (48,44), (48,60), (0,44), clamped at x = 0,
  * a uniform vertical shear traction of total F = 100 on the 16-wide edge x = 48 (6.25 per unit
  * length), E = 250, nu = 0.4999 (consistent units). Reference: the vertical displacement of the
- * tip (48, 60), converged value 7.77 from mixed and enhanced-strain elements on fine meshes
- * (Auricchio, Beirão da Veiga, Lovadina & Reali, CMAME 194 (2005) 2947, §6; the same set-up in
- * Chiumenti, Valverde, Agelet de Saracibar & Cervera, CMAME 191 (2002) 5253, seed 002 ref. [30],
- * who show converged linear-triangle results near 7.7).
+ * tip (48, 60), converged value 7.77 as quoted for mixed and enhanced-strain elements on fine
+ * meshes (e.g. Auricchio, Beirão da Veiga, Lovadina & Reali, CMAME 194 (2005) 2947; the same
+ * set-up in Chiumenti, Valverde, Agelet de Saracibar & Cervera, CMAME 191 (2002), seed 002
+ * ref. [30]). The Q1/P0 and FIC sequences here extrapolate to either side of it.
  *
  * Static solutions by dynamic relaxation (explicit steps with damping near critical for the
  * first mode). Meshes n x n (triangles: n x n quadrilaterals split on alternating diagonals):

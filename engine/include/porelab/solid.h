@@ -8,14 +8,16 @@
 ///     stabilised pressure equation (seed eqs. 83, 90–92)
 ///         int q dp/K - int q d(eps_v) + int tau grad q . (grad p + pi) = 0,
 ///         int tau w . (grad p + pi) = 0,          tau = alpha h^2 / (2 G),
-///     solved each step explicitly (eq. 104, needs K tau small enough: refused otherwise) or
-///     semi-implicitly with the pressure Laplacian factorised once by CHOLMOD (eq. 99);
+///     in total form (the volumetric strain integral accumulated over the steps), solved each
+///     step explicitly (eq. 104, needs K tau small enough: refused otherwise) or semi-implicitly
+///     with pi eliminated, S = M_p/K + L - Q M_tau^-1 Q^T factorised by CHOLMOD (eqs. 102-103);
 ///   - PL_SOLID_Q1P0: bilinear quadrilaterals, constant pressure per element (mean dilatation),
 ///     the reference element of the seed's §7.4.
 /// Materials: linear elastic (E, nu) and J2 plasticity with linear isotropic hardening
 /// (yield_stress > 0; radial return). Contact with discs (seed §6, eqs. 105–109): penetration
 /// from the disc centre to the boundary edge, normal spring-dashpot, regularised Coulomb
-/// friction, reaction spread to the edge nodes with the edge's linear shape functions.
+/// friction, reaction spread to the edge nodes with the edge's linear shape functions; convex
+/// polygons by their vertices inside the solid and the solid's convex corners inside them.
 /// The critical step, 2/omega_max bounded element by element, enters the world's automatic
 /// step; a run whose step exceeds it is stopped with a message.
 #ifndef PORELAB_SOLID_H
@@ -34,7 +36,7 @@ typedef struct pl_world pl_world;
 typedef enum pl_solid_formulation {
     PL_SOLID_PLAIN = 0,             ///< linear triangles, displacement only
     PL_SOLID_FIC_EXPLICIT = 1,      ///< triangles + FIC pressure, explicit pressure (eq. 104)
-    PL_SOLID_FIC_SEMI_IMPLICIT = 2, ///< triangles + FIC pressure, Laplacian by CHOLMOD (eq. 99)
+    PL_SOLID_FIC_SEMI_IMPLICIT = 2, ///< triangles + FIC pressure, implicit by CHOLMOD (eqs. 102-103)
     PL_SOLID_Q1P0 = 3               ///< bilinear quadrilaterals, constant pressure (mean dilatation)
 } pl_solid_formulation;
 
