@@ -183,9 +183,6 @@ void pl__integrate(pl_world *w, double dt) {
                 if (I > 0) damped += ((Cr + alpha * I) * wm * wm - Tl * wm) * dt;
             }
             if (w->any_load) external += (w->load[i].x * vm.x + w->load[i].y * vm.y + w->load_moment[i] * wm) * dt;
-            /* the models' loads (solid contact, fluid drag), at the midpoint velocity like the loads */
-            if (w->model_n > 0 && w->wants_load[i] && motion == PL_MOTION_DYNAMIC)
-                external += (w->ext_force[i].x * vm.x + w->ext_force[i].y * vm.y + w->ext_moment[i] * wm) * dt;
             vel[i] = v1;
             w->omega[i] = w1;
             pos[i].x += v1.x * dt;
