@@ -1,6 +1,7 @@
 #include "scene_render.h"
 #include "lua_util.h"
 #include "porelab/fluid.h"
+#include "porelab/solid.h"
 #include "render/colormap.h"
 
 #include <math.h>
@@ -190,12 +191,15 @@ static void read_field_options(lua_State *L, pl_render_options *o)
     /* Names in the order of pl_fluid_node_field, so the option index is the enum value. */
     static const char *const fields[] = {"head", "pressure_head", "pressure",
                                          "excess_pressure", "velocity_x", "velocity_y",
-                                         "speed", NULL};
+                                         "speed", "mises", "plastic_strain",
+                                         "solid_pressure", "displacement", NULL};
     _Static_assert(PL_FLUID_HEAD == 0 && PL_FLUID_PRESSURE_HEAD == 1 &&
                        PL_FLUID_PRESSURE == 2 && PL_FLUID_EXCESS_PRESSURE == 3 &&
                        PL_FLUID_VELOCITY_NODE_X == 4 && PL_RENDER_FLUID_SPEED == 6,
                    "fluid field names follow pl_fluid_node_field");
     o->fluid_field = pl_lua_field_option(L, 2, fn, "fluid_field", o->fluid_field, fields);
+    if (o->fluid_field >= 7 && o->fluid_field < 11) /* the solid's fields (porelab/solid.h) */
+        o->fluid_field += PL_SOLID_FIELD_MISES - 7;
     o->isoline_count = pl_lua_field_int(L, 2, fn, "isolines", o->isoline_count);
     PL_LUA_CHECK(L, o->isoline_count >= 1 && o->isoline_count <= 100, fn, "isolines",
                  "in 1..100", o->isoline_count);

@@ -10,7 +10,8 @@
  *     w:solid_initial_velocity{ box = {...}, vx = 0, vy = 0 }           -> node count
  *     w:solid_reaction(set) -> fx, fy        w:solid_displacement(x, y) -> ux, uy
  *     w:solid_energy() -> {kinetic, elastic, internal, external, damping, plastic, contact}
- *     w:solid_info() -> {nodes, elements, critical_dt}
+ *     w:solid_mesh{file = "part.msh"}       (gmsh mesh file in the scene's or the output folder)
+ *     w:solid_info() -> {nodes, elements, critical_dt, solid_seconds, contact_seconds}
  *     w:solid_extremes() -> mises_max, plastic_strain_max
  *     w:solid_contact_force() -> fx, fy (of the grains on the solid)
  * The def fields come from the parameter table (pl_solid_params); formulation may also be
@@ -18,6 +19,7 @@
 #include "wrap.h"
 #include "lua_util.h"
 #include "lua_params.h"
+#include "sandbox.h"
 #include "porelab/solid.h"
 #include <math.h>
 
@@ -110,6 +112,21 @@ static int s_polygon(lua_State *L) {
     const int n = read_points(L, 2, fn, "points", p, 256);
     const double h = pl_lua_field_number(L, 2, fn, "h", 0);
     return push_index(L, lw, pl_world_solid_polygon(lw->w, p, n, h), fn);
+}
+
+/* w:solid_mesh{file = "part.msh"}: a part from a gmsh mesh file, inside the scene's folder or
+   the output folder (the sandbox's input rule). */
+static int s_mesh(lua_State *L) {
+    const char *fn = "solid_mesh";
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    pl_lua_check_def(L, 2, fn);
+    static const char *const valid[] = {"file", NULL};
+    pl_lua_check_fields(L, 2, fn, valid);
+    const char *file = pl_lua_field_string(L, 2, fn, "file", NULL);
+    if (!file) pl_lua_error(L, "%s: file is required (a gmsh .msh file beside the scene)", fn);
+    char resolved[4096];
+    pl_lua_input_path(L, file, resolved, sizeof resolved, fn);
+    return push_index(L, lw, pl_world_solid_mesh_file(lw->w, resolved), fn);
 }
 
 static void read_box(lua_State *L, const char *fn, double b[4]) {
@@ -220,7 +237,13 @@ static int s_energy(lua_State *L) {
 
 static int s_info(lua_State *L) {
     pl_lua_world *lw = pl_lua_check_world(L, 1);
-    lua_createtable(L, 0, 3);
+    lua_createtable(L, 0, 5);
+    double fe_s, ct_s;
+    pl_world_solid_cost(lw->w, &fe_s, &ct_s);
+    lua_pushnumber(L, fe_s);
+    lua_setfield(L, -2, "solid_seconds");
+    lua_pushnumber(L, ct_s);
+    lua_setfield(L, -2, "contact_seconds");
     lua_pushinteger(L, pl_world_solid_node_count(lw->w));
     lua_setfield(L, -2, "nodes");
     lua_pushinteger(L, pl_world_solid_element_count(lw->w));
@@ -260,6 +283,7 @@ const luaL_Reg pl_lua_solid_methods[] = {{"solid", s_solid},
                                          {"solid_displacement", s_displacement},
                                          {"solid_energy", s_energy},
                                          {"solid_info", s_info},
+                                         {"solid_mesh", s_mesh},
                                          {"solid_extremes", s_extremes},
                                          {"solid_contact_force", s_contact_force},
                                          {NULL, NULL}};

@@ -3,6 +3,7 @@
 #include "draw_world.h"
 #include "label_place.h"
 #include "porelab/fluid.h"
+#include "porelab/solid.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -165,7 +166,8 @@ int pl_render_scene_capture_fluid(pl_render_scene *s, const pl_world *w, int fie
 #define PL_FLUID_FLOOR_M 1e-4
 
 static int field_is_pa(int field) {
-    return field == PL_FLUID_PRESSURE || field == PL_FLUID_EXCESS_PRESSURE;
+    return field == PL_FLUID_PRESSURE || field == PL_FLUID_EXCESS_PRESSURE || field == PL_SOLID_FIELD_MISES ||
+           field == PL_SOLID_FIELD_PRESSURE;
 }
 
 void pl_render_scene_denoise_fluid(pl_render_scene *s) {
@@ -233,7 +235,7 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
          * diverging map, symmetric about zero; never narrower than the floor. */
         double floor_v = is_pa ? PL_FLUID_FLOOR_PA : PL_FLUID_FLOOR_M;
         int signed_field = lo < 0.0 && hi > 0.0 && -lo > 0.02 * hi && hi > 0.02 * -lo;
-        int zero_based = is_pa || is_vel || field == PL_FLUID_PRESSURE_HEAD;
+        int zero_based = is_pa || is_vel || field == PL_FLUID_PRESSURE_HEAD || field >= PL_SOLID_FIELD_MISES;
         if (signed_field && zero_based) {
             double m = fmax(fmax(-lo, hi), floor_v);
             lo = -m;
@@ -259,14 +261,17 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
     *vmin = lo;
     *vmax = hi;
     *unit_factor = 1.0;
-    const char *name = field == PL_FLUID_HEAD ? "total head"
+    static const char *const solid[4] = {"von Mises stress", "plastic strain", "mean stress", "displacement"};
+    const int sq = field - PL_SOLID_FIELD_MISES;
+    const char *name = sq >= 0 && sq < 4 ? solid[sq]
+                       : field == PL_FLUID_HEAD ? "total head"
                        : field == PL_FLUID_PRESSURE_HEAD ? "pressure head"
                        : field == PL_FLUID_EXCESS_PRESSURE ? "excess pore pressure"
                        : field == PL_FLUID_VELOCITY_NODE_X ? "fluid velocity x"
                        : field == PL_FLUID_VELOCITY_NODE_Y ? "fluid velocity y"
                        : field == PL_RENDER_FLUID_SPEED ? "fluid speed"
                                                            : "pore pressure";
-    const char *unit = "m";
+    const char *unit = field == PL_SOLID_FIELD_PLASTIC_STRAIN ? "1" : "m";
     if (is_vel) {
         unit = "m/s";
         if (fmax(fabs(lo), fabs(hi)) < 0.1) { *unit_factor = 1e3; unit = "mm/s"; }

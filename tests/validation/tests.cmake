@@ -16,8 +16,8 @@ set(PL_VALIDATION_TESTS
   test_fluid_frame test_fluid_snapshot test_ns_flow test_ns_validation test_ns_world_long
   test_soil_terzaghi test_soil_undrained test_soil_overburden test_soil_quicksand soil_consolidation_short
   soil_consolidation soil_liquefaction soil_simple_shear soil_simple_shear_uncoupled soil_simple_shear_full
-  test_solid_elastic test_solid_lame test_solid_plastic test_solid_world)
-set(PL_VALIDATION_LONG soil_consolidation soil_liquefaction soil_simple_shear_full test_ns_world_long)
+  test_solid_elastic test_solid_lame test_solid_plastic test_solid_world test_solid_cook test_solid_punch)
+set(PL_VALIDATION_LONG soil_consolidation soil_liquefaction soil_simple_shear_full test_ns_world_long test_solid_punch)
 set(_pl_vt "")
 foreach(t IN LISTS PL_VALIDATION_TESTS)
   if(TEST ${t})

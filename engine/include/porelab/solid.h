@@ -8,14 +8,16 @@
 ///     stabilised pressure equation (seed eqs. 83, 90–92)
 ///         int q dp/K - int q d(eps_v) + int tau grad q . (grad p + pi) = 0,
 ///         int tau w . (grad p + pi) = 0,          tau = alpha h^2 / (2 G),
-///     solved each step explicitly (eq. 104, needs K tau small enough: refused otherwise) or
-///     semi-implicitly with the pressure Laplacian factorised once by CHOLMOD (eq. 99);
+///     in total form (the volumetric strain integral accumulated over the steps), solved each
+///     step explicitly (eq. 104, needs K tau small enough: refused otherwise) or semi-implicitly
+///     with pi eliminated, S = M_p/K + L - Q M_tau^-1 Q^T factorised by CHOLMOD (eqs. 102-103);
 ///   - PL_SOLID_Q1P0: bilinear quadrilaterals, constant pressure per element (mean dilatation),
 ///     the reference element of the seed's §7.4.
 /// Materials: linear elastic (E, nu) and J2 plasticity with linear isotropic hardening
 /// (yield_stress > 0; radial return). Contact with discs (seed §6, eqs. 105–109): penetration
 /// from the disc centre to the boundary edge, normal spring-dashpot, regularised Coulomb
-/// friction, reaction spread to the edge nodes with the edge's linear shape functions.
+/// friction, reaction spread to the edge nodes with the edge's linear shape functions; convex
+/// polygons by their vertices inside the solid and the solid's convex corners inside them.
 /// The critical step, 2/omega_max bounded element by element, enters the world's automatic
 /// step; a run whose step exceeds it is stopped with a message.
 #ifndef PORELAB_SOLID_H
@@ -34,7 +36,7 @@ typedef struct pl_world pl_world;
 typedef enum pl_solid_formulation {
     PL_SOLID_PLAIN = 0,             ///< linear triangles, displacement only
     PL_SOLID_FIC_EXPLICIT = 1,      ///< triangles + FIC pressure, explicit pressure (eq. 104)
-    PL_SOLID_FIC_SEMI_IMPLICIT = 2, ///< triangles + FIC pressure, Laplacian by CHOLMOD (eq. 99)
+    PL_SOLID_FIC_SEMI_IMPLICIT = 2, ///< triangles + FIC pressure, implicit by CHOLMOD (eqs. 102-103)
     PL_SOLID_Q1P0 = 3               ///< bilinear quadrilaterals, constant pressure (mean dilatation)
 } pl_solid_formulation;
 
@@ -61,13 +63,14 @@ typedef struct pl_solid_def {
 extern const pl_param pl_solid_params[PL_SOLID_PARAM_COUNT];
 pl_solid_def pl_default_solid_def(void);
 
-/// Field quantities of the solid (pl_world_field_sample / the renderer's field layers),
-/// averaged to the nodes.
+/// Field quantities of the solid (pl_world_field_sample / the renderer's field layers,
+/// render{ fluid_field = "mises" | "plastic_strain" | "solid_pressure" | "displacement" }),
+/// averaged to the nodes. (16-18 are the Navier-Stokes fields.)
 enum {
-    PL_SOLID_FIELD_MISES = 16,          ///< von Mises stress, Pa
-    PL_SOLID_FIELD_PLASTIC_STRAIN = 17, ///< equivalent plastic strain, 1
-    PL_SOLID_FIELD_PRESSURE = 18,       ///< mean stress (tension positive), Pa
-    PL_SOLID_FIELD_DISPLACEMENT = 19    ///< displacement magnitude, m
+    PL_SOLID_FIELD_MISES = 32,          ///< von Mises stress, Pa
+    PL_SOLID_FIELD_PLASTIC_STRAIN = 33, ///< equivalent plastic strain, 1
+    PL_SOLID_FIELD_PRESSURE = 34,       ///< mean stress (tension positive), Pa
+    PL_SOLID_FIELD_DISPLACEMENT = 35    ///< displacement magnitude, m
 };
 
 /// Energy ledger of the solid (J per m thickness). Balance: kinetic + internal - external +
@@ -92,6 +95,10 @@ int pl_world_solid_annulus(pl_world *w, double cx, double cy, double ri, double 
                            int nt);
 /// Unstructured triangles (gmsh Frontal-Delaunay) in a simple polygon (CCW), element size h.
 int pl_world_solid_polygon(pl_world *w, const pl_vec2 *verts, int n, double h);
+/// A part read from a gmsh .msh file (gmsh's C API; plane mesh, z = 0): its 3-node triangles,
+/// or its 4-node quadrilaterals for Q1/P0. The file name must end in .msh; an unreadable,
+/// damaged or non-plane file is refused with the file and the reason.
+int pl_world_solid_mesh_file(pl_world *w, const char *path);
 /// Fixes the components in mask (1 x, 2 y, 3 both) of the nodes whose reference position is in
 /// the box. Returns the set index (for reactions) or a status.
 int pl_world_solid_fix(pl_world *w, double x0, double y0, double x1, double y1, int mask);
@@ -112,6 +119,9 @@ int pl_world_solid_element_count(const pl_world *w);
 /// Critical step of the solid, s (2/omega_max over the elements), and the element giving it.
 double pl_world_solid_critical_dt(const pl_world *w, int *element);
 pl_status pl_world_solid_energy(const pl_world *w, pl_solid_energy *out);
+/// Time spent (s, monotonic clock) in the solid since it was attached: the finite elements
+/// (step, pressure, stress update) and the grain-edge contact (search and forces).
+void pl_world_solid_cost(const pl_world *w, double *solid_seconds, double *contact_seconds);
 /// Largest von Mises stress (Pa) and equivalent plastic strain over the integration points.
 pl_status pl_world_solid_extremes(const pl_world *w, double *mises_max, double *plastic_max);
 /// Total contact force of the grains on the solid (N/m), last step.

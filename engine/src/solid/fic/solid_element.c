@@ -76,7 +76,7 @@ static int resize(pl_sf *s, int nn, int ne, int old_nn, int old_ne) {
     memset(s->ptr + (k) * oN, 0, sizeof *s->ptr * (k) * (N - oN));
 #define IP(ptr, k) if (!grow((void **)&s->ptr, sizeof *s->ptr * (k), I)) return 0; \
     memset(s->ptr + (k) * oI, 0, sizeof *s->ptr * (k) * (I - oI));
-    NODE(X, 2) NODE(x, 2) NODE(v, 2) NODE(p, 1) NODE(pi, 2) NODE(f_prev, 2) NODE(fe_prev, 2)
+    NODE(X, 2) NODE(x, 2) NODE(v, 2) NODE(p, 1) NODE(pi, 2) NODE(gv, 1) NODE(f_prev, 2) NODE(fe_prev, 2)
     NODE(m, 1) NODE(mp, 1) NODE(mt, 1) NODE(f, 2) NODE(du, 2) NODE(rhs, 1) NODE(fc, 2) NODE(xm, 2)
     NODE(fix, 1) NODE(vpres, 2)
     IP(s, 4) IP(pe, 1) IP(ep, 4) IP(alpha, 1)
@@ -154,7 +154,7 @@ pl_status pl_sf_append(pl_sf *s, const pl_sf_mesh *mesh) {
 void pl_sf_destroy(pl_sf *s) {
     if (!s) return;
     pl_sf_fic_free(s);
-    pl_free(s->X); pl_free(s->x); pl_free(s->v); pl_free(s->p); pl_free(s->pi); pl_free(s->f_prev);
+    pl_free(s->X); pl_free(s->x); pl_free(s->v); pl_free(s->p); pl_free(s->pi); pl_free(s->gv); pl_free(s->f_prev);
     pl_free(s->fe_prev); pl_free(s->m); pl_free(s->mp); pl_free(s->mt); pl_free(s->f); pl_free(s->du);
     pl_free(s->rhs); pl_free(s->fc); pl_free(s->xm); pl_free(s->fix); pl_free(s->vpres); pl_free(s->s); pl_free(s->pe);
     pl_free(s->ep); pl_free(s->alpha); pl_free(s->conn); pl_free(s->tau); pl_free(s->bedge);

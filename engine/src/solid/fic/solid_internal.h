@@ -4,7 +4,7 @@
  * contact of discs with the boundary edges. The model class (solid_model.c) owns one pl_sf and
  * feeds it the grain view; the tests drive a pl_sf directly. docs/solids.md gives the equations.
  *
- * State (hashed, saved): x, v, p, pi, stress s and pressure pe of each integration point,
+ * State (hashed, saved): x, v, p, pi, gv, stress s and pressure pe of each integration point,
  * plastic strain, f_prev, energy tallies, time, step. Input: X, conn, material, boundary
  * conditions. Derived (rebuilt): masses, tau, element critical steps, the pressure factor. */
 #ifndef PL_SOLID_INTERNAL_H
@@ -64,6 +64,7 @@ typedef struct pl_sf {
     /* state */
     double *x, *v;       /* 2 nn current positions, half-step velocities */
     double *p, *pi;      /* nn nodal pressure (FIC), 2 nn projected gradient */
+    double *gv;          /* nn FIC: accumulated int N_a d(eps_v) over the steps (G^T u) */
     double *s;           /* 4 per ip: deviatoric stress xx, yy, zz, xy (Pa) */
     double *pe;          /* per ip: element pressure (plain, Q1/P0), Pa */
     double *ep;          /* 4 per ip: plastic strain xx, yy, zz, xy (tensor) */
@@ -143,9 +144,18 @@ typedef struct pl_sf_contact_out {
     double overlap;      /* largest penetration, m */
     int touching;
     double e_dashpot, e_friction; /* dissipated this step, J/m */
+    double spring;       /* energy in the contact springs now, J/m (polygons) */
 } pl_sf_contact_out;
 void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, double r, double dt,
                         double *fsolid, pl_sf_contact_out *out);
+
+/* Convex polygon grain (vertices vert, counter-clockwise, world coordinates; centroid c)
+   against the boundary edges: each grain vertex inside the solid is pushed out through the
+   nearest edge (penetration along its outward normal, reaction spread by the edge shape
+   functions) and each convex corner node of the solid inside the grain through the grain's
+   nearest edge; the same spring-dashpot and friction as the discs. */
+void pl_sf_polygon_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, const pl_vec2 *vert, int nv,
+                           double dt, double *fsolid, pl_sf_contact_out *out);
 
 /* Linear triangle with nodes n of the coordinates xy: area (positive counter-clockwise) and
    shape-function gradients b = dN/dx, c = dN/dy. */

@@ -19,6 +19,10 @@ pl_status pl_sf_mesh_annulus(double cx, double cy, double ri, double ro, double 
                              int quads, pl_sf_mesh *out, char *msg, size_t len);
 /* Unstructured triangles of size h in a simple polygon. */
 pl_status pl_sf_mesh_polygon(const pl_vec2 *v, int n, double h, pl_sf_mesh *out, char *msg, size_t len);
+/* Reads a gmsh .msh file (gmshMerge into a model of its own, gmshModelMeshGetNodes /
+   GetElementsByType; gmshOpen left gmsh unable to read a second file after a damaged one): its 3-node
+   triangles (quads = 0) or 4-node quadrilaterals (quads = 1); plane (z = 0) meshes only. */
+pl_status pl_sf_mesh_read(const char *path, int quads, pl_sf_mesh *out, char *msg, size_t len);
 void pl_sf_mesh_free(pl_sf_mesh *m);
 
 #endif

@@ -10,6 +10,7 @@
 #include "solid/fic/solid_mesh.h"
 #include "core/alloc.h"
 #include "mesh/gmsh_session.h"
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -47,6 +48,10 @@ pl_status pl_sf_mesh_polygon(const pl_vec2 *v, int n, double h, pl_sf_mesh *out,
     (void)v; (void)n; (void)h; (void)out;
     return no_gmsh(msg, len, "polygon");
 }
+pl_status pl_sf_mesh_read(const char *path, int quads, pl_sf_mesh *out, char *msg, size_t len) {
+    (void)path; (void)quads; (void)out;
+    return no_gmsh(msg, len, ".msh file");
+}
 #else
 
 static int begin(void) {
@@ -68,6 +73,8 @@ static void end(void) {
     gmshModelRemove(&ierr);
 }
 
+static pl_status copy_mesh(int quads, pl_sf_mesh *out, char *msg, size_t len);
+
 /* Generates the 2D mesh and copies nodes and elements of type 2 (3-node triangles) or 3 (4-node
    quadrilaterals). */
 static pl_status extract(int quads, pl_sf_mesh *out, char *msg, size_t len) {
@@ -77,6 +84,12 @@ static pl_status extract(int quads, pl_sf_mesh *out, char *msg, size_t len) {
         snprintf(msg, len, "solid: gmsh could not mesh the part (error %d)", ierr);
         return PL_ERR_NUMERIC;
     }
+    return copy_mesh(quads, out, msg, len);
+}
+
+/* Copies the current model's nodes and elements of type 2 or 3 (the nodes they use only). */
+static pl_status copy_mesh(int quads, pl_sf_mesh *out, char *msg, size_t len) {
+    int ierr = 0;
     size_t *tags = NULL, ntags = 0, npc = 0, ncoord = 0;
     double *coord = NULL, *pc = NULL;
     gmshModelMeshGetNodes(&tags, &ntags, &coord, &ncoord, &pc, &npc, -1, -1, 0, 0, &ierr);
@@ -120,6 +133,61 @@ static pl_status extract(int quads, pl_sf_mesh *out, char *msg, size_t len) {
     pl_free(map);
     gmshFree(tags); gmshFree(coord); gmshFree(pc); gmshFree(et); gmshFree(en);
     if (st != PL_OK) pl_sf_mesh_free(out);
+    return st;
+}
+
+pl_status pl_sf_mesh_read(const char *path, int quads, pl_sf_mesh *out, char *msg, size_t len) {
+    memset(out, 0, sizeof *out);
+    const size_t n = strlen(path);
+    if (n < 5 || strcmp(path + n - 4, ".msh") != 0) {
+        snprintf(msg, len, "solid_mesh: '%s' is not a gmsh mesh file: the name must end in .msh (gmsh would run "
+                 "any other file as a script)", path);
+        return PL_ERR_ARG;
+    }
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(msg, len, "solid_mesh: cannot read '%s': %s", path, strerror(errno));
+        return PL_ERR_IO;
+    }
+    char head[16] = {0};
+    const size_t got = fread(head, 1, 11, f);
+    fclose(f);
+    if (got < 11 || strncmp(head, "$MeshFormat", 11) != 0) {
+        snprintf(msg, len, "solid_mesh: '%s' is not a gmsh .msh file (it does not begin with $MeshFormat)", path);
+        return PL_ERR_ARG;
+    }
+    int ierr = begin();
+    gmshMerge(path, &ierr); /* into the model begin() made current (gmshOpen would replace models) */
+    if (ierr) {
+        snprintf(msg, len, "solid_mesh: gmsh could not read '%s' (gmsh error %d: a damaged or unsupported .msh "
+                 "file)", path, ierr);
+        end();
+        return PL_ERR_ARG;
+    }
+    /* 2D only: every node in the plane z = 0 */
+    size_t *tags = NULL, ntags = 0, npc = 0, ncoord = 0;
+    double *coord = NULL, *pc = NULL;
+    gmshModelMeshGetNodes(&tags, &ntags, &coord, &ncoord, &pc, &npc, -1, -1, 0, 0, &ierr);
+    double zmax = 0;
+    for (size_t k = 0; k < ntags; k++) zmax = fmax(zmax, fabs(coord[3 * k + 2]));
+    gmshFree(tags); gmshFree(coord); gmshFree(pc);
+    if (ierr || ntags == 0) {
+        snprintf(msg, len, "solid_mesh: '%s' holds no mesh nodes", path);
+        end();
+        return PL_ERR_ARG;
+    }
+    if (zmax > 0) {
+        snprintf(msg, len, "solid_mesh: '%s' is not a plane mesh: a node lies at z = %g (porelab is 2D: z must be 0)",
+                 path, zmax);
+        end();
+        return PL_ERR_ARG;
+    }
+    pl_status st = copy_mesh(quads, out, msg, len);
+    if (st != PL_OK)
+        snprintf(msg, len, "solid_mesh: '%s' has no %s (gmsh element type %d)%s", path,
+                 quads ? "4-node quadrilaterals" : "3-node triangles", quads ? 3 : 2,
+                 quads ? " for the Q1/P0 formulation" : ": mesh the surface with first-order triangles");
+    end();
     return st;
 }
 

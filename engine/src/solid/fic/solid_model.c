@@ -28,6 +28,7 @@ typedef struct pl_solid {
     double e_contact_spring; /* energy in the contact springs now, J/m */
     double e_contact_diss;   /* dissipated by dashpots and friction so far, J/m (state) */
     double seconds;
+    double seconds_contact; /* part of seconds: the grain-edge contact search and forces */
     long calls;
 } pl_solid;
 
@@ -127,6 +128,15 @@ int pl_world_solid_polygon(pl_world *w, const pl_vec2 *verts, int n, double h) {
     return add_mesh(w, &mesh, st, msg);
 }
 
+int pl_world_solid_mesh_file(pl_world *w, const char *path) {
+    pl_solid *m = need(w, "solid_mesh");
+    if (!m) return PL_ERR_STATE;
+    pl_sf_mesh mesh;
+    char msg[320];
+    pl_status st = pl_sf_mesh_read(path, m->def.formulation == PL_SOLID_Q1P0, &mesh, msg, sizeof msg);
+    return add_mesh(w, &mesh, st, msg);
+}
+
 static pl_sf *need_sf(pl_world *w, const char *fn) {
     pl_solid *m = need(w, fn);
     if (!m) return NULL;
@@ -214,6 +224,12 @@ double pl_world_solid_critical_dt(const pl_world *w, int *element) {
     const pl_solid *m = get(w);
     if (element) *element = m && m->sf ? m->sf->dt_elem : -1;
     return m && m->sf ? m->sf->dt_crit : INFINITY;
+}
+
+void pl_world_solid_cost(const pl_world *w, double *solid_seconds, double *contact_seconds) {
+    const pl_solid *m = get(w);
+    *solid_seconds = m ? m->seconds - m->seconds_contact : 0;
+    *contact_seconds = m ? m->seconds_contact : 0;
 }
 
 pl_status pl_world_solid_energy(const pl_world *w, pl_solid_energy *out) {
@@ -308,17 +324,26 @@ static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, dou
     }
     for (int k = 0; k < nc; k++) {
         const int i = m->cand[k];
-        if (g->shape[i] != PL_SHAPE_DISC) continue;
         pl_sf_contact_out o;
-        pl_sf_disc_contact(s, g->pos[i], g->vel[i], g->omega[i], g->radius[i], dt, s->fc, &o);
+        if (g->shape[i] == PL_SHAPE_DISC) {
+            pl_sf_disc_contact(s, g->pos[i], g->vel[i], g->omega[i], g->radius[i], dt, s->fc, &o);
+            o.spring = 0.5 * s->def.contact_stiffness * o.overlap * o.overlap;
+        } else if (g->shape[i] == PL_SHAPE_POLYGON && g->vert_count[i] >= 3) {
+            pl_sf_polygon_contact(s, g->pos[i], g->vel[i], g->omega[i], &g->verts[g->vert_offset[i]],
+                                  g->vert_count[i], dt, s->fc, &o);
+        } else {
+            continue;
+        }
         if (!o.touching) continue;
         m->cf[i] = (pl_vec2){o.fx, o.fy};
         m->cm[i] = o.m;
         m->contact_total.x -= o.fx;
         m->contact_total.y -= o.fy;
         m->e_contact_diss += o.e_dashpot + o.e_friction;
-        m->e_contact_spring += 0.5 * s->def.contact_stiffness * o.overlap * o.overlap;
+        m->e_contact_spring += o.spring;
     }
+    const double t1 = pl_clock_seconds();
+    m->seconds_contact += t1 - t0;
     pl_status st = pl_sf_step(s, dt, s->fc);
     m->seconds += pl_clock_seconds() - t0;
     if (st != PL_OK) return pl__world_error(w, st, "%s", s->err);
@@ -351,8 +376,10 @@ static double contact_dt(const pl_solid *m, const pl_grain_view *g, int *what) {
     if (!(k > 0)) return INFINITY;
     for (int q = 0; q < s->nbedge; q++) mmin = fmin(mmin, s->m[s->bedge[2 * q]]);
     for (int i = 0; i < g->n; i++)
-        if (g->shape[i] == PL_SHAPE_DISC && g->motion[i] == PL_MOTION_DYNAMIC && g->mass[i] < mmin) {
-            mmin = g->mass[i];
+        if ((g->shape[i] == PL_SHAPE_DISC || g->shape[i] == PL_SHAPE_POLYGON) && g->motion[i] == PL_MOTION_DYNAMIC &&
+            g->mass[i] / (g->shape[i] == PL_SHAPE_POLYGON ? 2 : 1) < mmin) {
+            /* a polygon may rest on two vertices at once: two springs on its mass */
+            mmin = g->mass[i] / (g->shape[i] == PL_SHAPE_POLYGON ? 2 : 1);
             *what = 1;
         }
     const double c = s->def.contact_damping, zeta = c / (2 * sqrt(k * mmin));
@@ -392,6 +419,7 @@ static int state_arrays(const pl_sf *s, sd_arrays *a) {
     a[k++] = (sd_arrays){s->v, 2 * N};
     a[k++] = (sd_arrays){s->p, N};
     a[k++] = (sd_arrays){s->pi, 2 * N};
+    a[k++] = (sd_arrays){s->gv, N};
     a[k++] = (sd_arrays){s->f_prev, 2 * N};
     a[k++] = (sd_arrays){s->s, 4 * I};
     a[k++] = (sd_arrays){s->pe, I};
@@ -423,7 +451,7 @@ static void *sd_snapshot(const void *self, size_t *bytes) {
         if (bytes) *bytes = sizeof *z * 2;
         return z;
     }
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     size_t tot = 2 * sizeof(int64_t) + SD_NSCAL * sizeof(double);
     for (int k = 0; k < na; k++) tot += a[k].n * sizeof(double);
@@ -465,7 +493,7 @@ static pl_status sd_restore(void *self, pl_world *w, const void *snap) {
     memcpy(sc, buf + off, sizeof sc);
     off += sizeof sc;
     set_scalars(m, sc);
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     for (int k = 0; k < na; k++) {
         memcpy(a[k].ptr, buf + off, a[k].n * sizeof(double));
@@ -493,7 +521,7 @@ static pl_status sd_save(const void *self, pl_image *img) {
     double sc[SD_NSCAL];
     scalars(m, sc);
     st = pl__image_put(img, sc, sizeof sc);
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     for (int k = 0; k < na && st == PL_OK; k++) st = pl__image_put_array(img, a[k].ptr, sizeof(double), a[k].n);
     return st;
@@ -515,7 +543,7 @@ static pl_status sd_load(void *self, pl_world *w, pl_image *img) {
     if (!m->sf) return PL_OK;
     double sc[SD_NSCAL];
     st = pl__image_get(img, sc, sizeof sc);
-    sd_arrays a[9];
+    sd_arrays a[10];
     const int na = state_arrays(m->sf, a);
     for (int k = 0; k < na && st == PL_OK; k++) st = pl__image_get_array(img, a[k].ptr, sizeof(double), a[k].n);
     if (st != PL_OK) return pl__world_error(w, PL_ERR_IO, "load: the image's solid section is damaged");

@@ -2,14 +2,25 @@
  * the discrete matrices reconstructed in docs/solids.md from Oñate, Rojek, Taylor & Zienkiewicz
  * 2004). With nodal pressure p, projected gradient pi and tau_e = alpha h_e^2 / (2 G):
  *
- *   (M_p / K) (p^{n+1} - p^n) + L p^{n+1} + Q pi^n = G^T du          (pressure, eq. 83/99)
+ *   (M_p / K) p^{n+1} + L p^{n+1} + Q pi^{n+1} = g^{n+1},  g^{n+1} = g^n + G^T du  (eq. 83/99)
  *   pi^{n+1} = -M_tau^-1 Q^T p^{n+1}                                 (projection, eq. 100)
  *
+ * g (s->gv, state) accumulates the volumetric strain integral int N_a d(eps_v): the pressure
+ * equation is the static FIC equation of the seed's refs. [4, 30] in total form, evaluated once
+ * per step. (A literal incremental reading, (M_p/K) dp + L p^{n+1} + Q pi^n = G^T du with the
+ * total p in the stabilising terms, adds L p + Q pi once per step: the static limit then depends
+ * on the number of steps taken, and Cook's membrane came out 10 % too soft.)
+ *
  * M_p = int N_a (lumped), L_ab = int tau grad N_a . grad N_b, Q_a(pi) = int tau grad N_a . pi,
- * (G^T du)_a = int N_a d(eps_v), M_tau = int tau N_a (lumped). Semi-implicit: the matrix
- * M_p / K + L is factorised once by CHOLMOD (analysis reused; in the updated Lagrangian form the
- * values are refactorised each step on the current configuration). Explicit (eq. 104):
- * p^{n+1} = p^n + K M_p^-1 (G^T du - L p^n - Q pi^n), stable while the spectral radius of
+ * (G^T du)_a = int N_a d(eps_v), M_tau = int tau N_a (lumped). Semi-implicit (the three-step
+ * form, eqs. 102-103: pi eliminated): S p^{n+1} = g^{n+1} with S = M_p/K + L - Q M_tau^-1 Q^T,
+ * symmetric positive definite, factorised once by CHOLMOD (analysis reused; in the updated
+ * Lagrangian form refactorised each step on the current configuration). The pressure force
+ * G p is then G S^-1 G^T u, symmetric and bounded by the plain element's volumetric stiffness
+ * (S >= M_p/K), so the element bound of the critical step stays valid. (With pi lagged one step,
+ * the four-step form of eqs. 99-100, the coupled iteration grew slowly at nu = 0.4999.)
+ * Explicit (eq. 104):
+ * p^{n+1} = K M_p^-1 (g^{n+1} - L p^n - Q pi^n), stable while the spectral radius of
  * K M_p^-1 (L - Q M_tau^-1 Q^T) stays below one (estimated at preparation, refused above). */
 #include "solid/fic/solid_internal.h"
 #include "core/alloc.h"
@@ -24,12 +35,11 @@ typedef struct fic_chol {
     cholmod_sparse *A;
     cholmod_factor *L;
     cholmod_dense *b, *x, *wy, *we;
-    int32_t *emap;   /* 9 per element: position of (a, b) in A->x, -1 for the lower triangle */
+    int32_t *n2e_start, *n2e; /* elements around each node (CSR) */
     int factorised;
 } fic_chol;
 
 static double bulk(const pl_solid_def *d) { return d->young / (3 * (1 - 2 * d->poisson)); }
-
 
 void pl_sf_fic_free(pl_sf *s) {
     fic_chol *f = s->chol;
@@ -41,93 +51,96 @@ void pl_sf_fic_free(pl_sf *s) {
     if (f->wy) cholmod_free_dense(&f->wy, &f->cc);
     if (f->we) cholmod_free_dense(&f->we, &f->cc);
     cholmod_finish(&f->cc);
-    pl_free(f->emap);
+    pl_free(f->n2e_start);
+    pl_free(f->n2e);
     pl_free(f);
     s->chol = NULL;
 }
 
-static int cmp_i64(const void *a, const void *b) {
-    const int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
-/* Pattern of M_p/K + L (upper triangle, CSC) and the element map; symbolic analysis. */
-static pl_status build_pattern(pl_sf *s, fic_chol *f) {
-    const int nn = s->nn;
-    const size_t nk = (size_t)s->ne * 6 + (size_t)nn;
-    int64_t *key = pl_malloc(sizeof *key * nk);
-    if (!key) return PL_ERR_NOMEM;
-    size_t k = 0;
-    for (int i = 0; i < nn; i++) key[k++] = (int64_t)i * nn + i;
-    for (int e = 0; e < s->ne; e++) {
-        const int32_t *n = &s->conn[3 * (size_t)e];
-        for (int a = 0; a < 3; a++)
-            for (int b = a + 1; b < 3; b++) {
-                const int64_t lo = n[a] < n[b] ? n[a] : n[b], hi = n[a] < n[b] ? n[b] : n[a];
-                key[k++] = hi * nn + lo; /* column-major: column hi, row lo */
-            }
-    }
-    qsort(key, k, sizeof *key, cmp_i64);
-    size_t u = 0;
-    for (size_t q = 0; q < k; q++)
-        if (u == 0 || key[q] != key[u - 1]) key[u++] = key[q];
-    f->A = cholmod_allocate_sparse((size_t)nn, (size_t)nn, u, 1, 1, 1, CHOLMOD_REAL, &f->cc);
-    f->emap = pl_malloc(sizeof *f->emap * 9 * (size_t)s->ne);
-    if (!f->A || !f->emap) {
-        pl_free(key);
-        return PL_ERR_NOMEM;
-    }
-    int *Ap = f->A->p, *Ai = f->A->i;
-    int col = 0;
-    Ap[0] = 0;
-    for (size_t q = 0; q < u; q++) {
-        const int j = (int)(key[q] / nn), i = (int)(key[q] % nn);
-        while (col < j) Ap[++col] = (int)q;
-        Ai[q] = i;
-    }
-    while (col < nn) Ap[++col] = (int)u;
-    for (int e = 0; e < s->ne; e++) {
-        const int32_t *n = &s->conn[3 * (size_t)e];
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) {
-                const int i = n[a], j = n[b];
-                int32_t pos = -1;
-                if (i <= j) {
-                    const int64_t kk = (int64_t)j * nn + i;
-                    const int64_t *hit = bsearch(&kk, key, u, sizeof *key, cmp_i64);
-                    pos = (int32_t)(hit - key);
-                }
-                f->emap[9 * e + 3 * a + b] = pos;
-            }
-    }
-    pl_free(key);
-    f->b = cholmod_zeros((size_t)nn, 1, CHOLMOD_REAL, &f->cc);
-    if (!f->b) return PL_ERR_NOMEM;
-    f->L = cholmod_analyze(f->A, &f->cc);
-    if (!f->L || f->cc.status < CHOLMOD_OK) return PL_ERR_NUMERIC;
+/* Elements around each node (for the projection term Q M_tau^-1 Q^T). */
+static pl_status node_elements(pl_sf *s, fic_chol *f) {
+    f->n2e_start = pl_calloc((size_t)s->nn + 1, sizeof *f->n2e_start);
+    f->n2e = pl_malloc(sizeof *f->n2e * 3 * (size_t)(s->ne > 0 ? s->ne : 1));
+    if (!f->n2e_start || !f->n2e) return PL_ERR_NOMEM;
+    for (int e = 0; e < s->ne; e++)
+        for (int a = 0; a < 3; a++) f->n2e_start[s->conn[3 * e + a] + 1]++;
+    for (int i = 0; i < s->nn; i++) f->n2e_start[i + 1] += f->n2e_start[i];
+    int32_t *fill = pl_malloc(sizeof *fill * (size_t)(s->nn > 0 ? s->nn : 1));
+    if (!fill) return PL_ERR_NOMEM;
+    memcpy(fill, f->n2e_start, sizeof *fill * (size_t)s->nn);
+    for (int e = 0; e < s->ne; e++)
+        for (int a = 0; a < 3; a++) f->n2e[fill[s->conn[3 * e + a]]++] = e;
+    pl_free(fill);
     return PL_OK;
 }
 
-/* Values of M_p/K + L on the configuration xy, numeric factorisation (analysis reused). */
+/* S = M_p/K + L - Q M_tau^-1 Q^T on the configuration xy (upper triangle), its numeric
+   factorisation (the symbolic analysis of the first call reused: the pattern is the mesh's). */
 static pl_status factorize(pl_sf *s, fic_chol *f, const double *xy) {
     const double K = bulk(&s->def);
-    double *Ax = f->A->x;
-    memset(Ax, 0, sizeof *Ax * ((int *)f->A->p)[s->nn]);
+    size_t cap = (size_t)s->ne * 6;
+    for (int k = 0; k < s->nn; k++) {
+        const size_t m = 2 * (size_t)(f->n2e_start[k + 1] - f->n2e_start[k]) + 1;
+        cap += m * (m + 1) / 2;
+    }
+    cholmod_triplet *T = cholmod_allocate_triplet((size_t)s->nn, (size_t)s->nn, cap, 1, CHOLMOD_REAL, &f->cc);
+    if (!T) return PL_ERR_NOMEM;
+    int *Ti = T->i, *Tj = T->j;
+    double *Tx = T->x;
+    size_t nz = 0;
+#define PUT(r, c, v) do { const int r_ = (r), c_ = (c); Ti[nz] = r_ < c_ ? r_ : c_; Tj[nz] = r_ < c_ ? c_ : r_; \
+        Tx[nz++] = (v); } while (0)
     for (int e = 0; e < s->ne; e++) {
         const int32_t *n = &s->conn[3 * (size_t)e];
         double b[3], c[3];
         const double A = pl_sf_tri_grad(xy, n, b, c);
         for (int a = 0; a < 3; a++)
-            for (int q = 0; q < 3; q++) {
-                const int32_t pos = f->emap[9 * e + 3 * a + q];
-                if (pos < 0) continue;
-                Ax[pos] += s->tau[e] * A * (b[a] * b[q] + c[a] * c[q]) + (a == q ? A / (3 * K) : 0);
+            for (int q = a; q < 3; q++)
+                PUT(n[a], n[q], s->tau[e] * A * (b[a] * b[q] + c[a] * c[q]) + (a == q ? A / (3 * K) : 0));
+    }
+    /* - sum_k Q_ak . Q_bk / m_tau,k with Q_ak = sum_{e around k} tau_e A_e / 3 grad N_a */
+    enum { MAXN = 64 };
+    int32_t nb[MAXN];
+    double qx[MAXN], qy[MAXN];
+    for (int k = 0; k < s->nn; k++) {
+        int m = 0;
+        for (int32_t q = f->n2e_start[k]; q < f->n2e_start[k + 1]; q++) {
+            const int e = f->n2e[q];
+            const int32_t *n = &s->conn[3 * (size_t)e];
+            double b[3], c[3];
+            const double A = pl_sf_tri_grad(xy, n, b, c);
+            for (int a = 0; a < 3; a++) {
+                int j = 0;
+                while (j < m && nb[j] != n[a]) j++;
+                if (j == m) {
+                    if (m == MAXN) {
+                        cholmod_free_triplet(&T, &f->cc);
+                        snprintf(s->err, sizeof s->err, "solid: node %d has more than %d neighbours", k + 1, MAXN);
+                        return PL_ERR_ARG;
+                    }
+                    nb[m] = n[a], qx[m] = qy[m] = 0, m++;
+                }
+                qx[j] += s->tau[e] * A / 3 * b[a];
+                qy[j] += s->tau[e] * A / 3 * c[a];
             }
+        }
+        for (int i = 0; i < m; i++)
+            for (int j = i; j < m; j++) PUT(nb[i], nb[j], -(qx[i] * qx[j] + qy[i] * qy[j]) / s->mt[k]);
+    }
+#undef PUT
+    T->nnz = nz;
+    if (f->A) cholmod_free_sparse(&f->A, &f->cc);
+    f->A = cholmod_triplet_to_sparse(T, nz, &f->cc);
+    cholmod_free_triplet(&T, &f->cc);
+    if (!f->A) return PL_ERR_NOMEM;
+    if (!f->L) {
+        f->L = cholmod_analyze(f->A, &f->cc);
+        if (!f->L || f->cc.status < CHOLMOD_OK) return PL_ERR_NUMERIC;
     }
     if (!cholmod_factorize(f->A, f->L, &f->cc) || f->cc.status == CHOLMOD_NOT_POSDEF) {
         snprintf(s->err, sizeof s->err,
-                 "solid: the FIC pressure matrix M_p/K + L is not positive definite (CHOLMOD status %d); an "
-                 "element has collapsed",
+                 "solid: the FIC pressure matrix M_p/K + L - Q M_tau^-1 Q^T is not positive definite (CHOLMOD "
+                 "status %d); an element has collapsed",
                  f->cc.status);
         return PL_ERR_NUMERIC;
     }
@@ -210,7 +223,8 @@ pl_status pl_sf_fic_prepare(pl_sf *s) {
     cholmod_start(&f->cc);
     f->cc.print = 0;
     s->chol = f;
-    pl_status st = build_pattern(s, f);
+    f->b = cholmod_zeros((size_t)s->nn, 1, CHOLMOD_REAL, &f->cc);
+    pl_status st = f->b ? node_elements(s, f) : PL_ERR_NOMEM;
     if (st == PL_OK) st = factorize(s, f, s->X);
     if (st != PL_OK) {
         if (!s->err[0]) snprintf(s->err, sizeof s->err, "solid: could not build the FIC pressure system");
@@ -224,8 +238,7 @@ pl_status pl_sf_fic_pressure(pl_sf *s, const double *du) {
     const double *xy = s->def.large_strain ? s->x : s->X;
     const double *xd = s->def.large_strain ? s->xm : s->X; /* strain increment: mid-step */
     double *r = s->rhs;
-    /* r = G^T du - (L p^n + Q pi^n) (explicit) or M_p p^n / K + G^T du - Q pi^n (semi-implicit) */
-    memset(r, 0, sizeof *r * (size_t)s->nn);
+    /* gv += G^T du; r = gv (semi-implicit, pi implicit) or gv - L p^n - Q pi^n (explicit) */
     const int semi = s->def.formulation == PL_SOLID_FIC_SEMI_IMPLICIT;
     for (int e = 0; e < s->ne; e++) {
         const int32_t *n = &s->conn[3 * (size_t)e];
@@ -233,14 +246,18 @@ pl_status pl_sf_fic_pressure(pl_sf *s, const double *du) {
         const double Ad = pl_sf_tri_grad(xd, n, b, c);
         double ev = 0;
         for (int a = 0; a < 3; a++) ev += b[a] * du[2 * n[a]] + c[a] * du[2 * n[a] + 1];
+        for (int a = 0; a < 3; a++) s->gv[n[a]] += Ad / 3 * ev;
+    }
+    memcpy(r, s->gv, sizeof *r * (size_t)s->nn);
+    for (int e = 0; e < s->ne && !semi; e++) {
+        const int32_t *n = &s->conn[3 * (size_t)e];
+        double b[3], c[3];
         const double A = pl_sf_tri_grad(xy, n, b, c);
-        double gx = (s->pi[2 * n[0]] + s->pi[2 * n[1]] + s->pi[2 * n[2]]) / 3;
-        double gy = (s->pi[2 * n[0] + 1] + s->pi[2 * n[1] + 1] + s->pi[2 * n[2] + 1]) / 3;
-        if (!semi) {
-            gx += b[0] * s->p[n[0]] + b[1] * s->p[n[1]] + b[2] * s->p[n[2]];
-            gy += c[0] * s->p[n[0]] + c[1] * s->p[n[1]] + c[2] * s->p[n[2]];
-        }
-        for (int a = 0; a < 3; a++) r[n[a]] += Ad / 3 * ev - s->tau[e] * A * (b[a] * gx + c[a] * gy);
+        const double gx = (s->pi[2 * n[0]] + s->pi[2 * n[1]] + s->pi[2 * n[2]]) / 3 +
+                          b[0] * s->p[n[0]] + b[1] * s->p[n[1]] + b[2] * s->p[n[2]];
+        const double gy = (s->pi[2 * n[0] + 1] + s->pi[2 * n[1] + 1] + s->pi[2 * n[2] + 1]) / 3 +
+                          c[0] * s->p[n[0]] + c[1] * s->p[n[1]] + c[2] * s->p[n[2]];
+        for (int a = 0; a < 3; a++) r[n[a]] -= s->tau[e] * A * (b[a] * gx + c[a] * gy);
     }
     if (semi) {
         fic_chol *f = s->chol;
@@ -252,15 +269,14 @@ pl_status pl_sf_fic_pressure(pl_sf *s, const double *du) {
             pl_status st = factorize(s, f, xy);
             if (st != PL_OK) return st;
         }
-        double *b = f->b->x;
-        for (int i = 0; i < s->nn; i++) b[i] = r[i] + s->mp[i] * s->p[i] / K;
+        memcpy(f->b->x, r, sizeof *r * (size_t)s->nn);
         if (!cholmod_solve2(CHOLMOD_A, f->L, f->b, NULL, &f->x, NULL, &f->wy, &f->we, &f->cc)) {
             snprintf(s->err, sizeof s->err, "solid: the FIC pressure solve failed (CHOLMOD status %d)", f->cc.status);
             return PL_ERR_NUMERIC;
         }
         memcpy(s->p, f->x->x, sizeof *s->p * (size_t)s->nn);
     } else {
-        for (int i = 0; i < s->nn; i++) s->p[i] += K * r[i] / s->mp[i];
+        for (int i = 0; i < s->nn; i++) s->p[i] = K * r[i] / s->mp[i];
     }
     /* projected gradient (eq. 100), lumped M_tau */
     memset(s->pi, 0, sizeof *s->pi * 2 * (size_t)s->nn);

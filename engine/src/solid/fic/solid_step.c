@@ -226,6 +226,110 @@ void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, dou
     }
 }
 
+/* Normal spring-dashpot and regularised Coulomb friction at point q of a grain (centroid c,
+   velocity vc, spin omega) pressed along n (unit, pointing from the solid into the grain) by
+   delta; the solid side is the point with shape weights (1 - t, t) on nodes a, b (b < 0: the
+   node a alone). Force and moment on the grain into out, the opposite into fsolid. */
+static void point_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, double dt, pl_vec2 q, pl_vec2 n,
+                          double delta, int a, int b, double t, double *fsolid, pl_sf_contact_out *out) {
+    const pl_solid_def *d = &s->def;
+    const double vgx = vc.x - omega * (q.y - c.y), vgy = vc.y + omega * (q.x - c.x);
+    double vsx = s->v[2 * a], vsy = s->v[2 * a + 1];
+    if (b >= 0) {
+        vsx = (1 - t) * vsx + t * s->v[2 * b];
+        vsy = (1 - t) * vsy + t * s->v[2 * b + 1];
+    }
+    const double rx = vgx - vsx, ry = vgy - vsy;
+    const double vn = rx * n.x + ry * n.y;
+    const double Fn = d->contact_stiffness * delta - d->contact_damping * vn;
+    const pl_vec2 tt = {-n.y, n.x};
+    const double vt = rx * tt.x + ry * tt.y;
+    const double Ft = -d->friction * fabs(Fn) * tanh(vt / d->slip_velocity);
+    const double Fx = Fn * n.x + Ft * tt.x, Fy = Fn * n.y + Ft * tt.y;
+    out->fx += Fx;
+    out->fy += Fy;
+    out->m += (q.x - c.x) * Fy - (q.y - c.y) * Fx;
+    out->touching = 1;
+    if (delta > out->overlap) out->overlap = delta;
+    out->spring += 0.5 * d->contact_stiffness * delta * delta;
+    out->e_dashpot += d->contact_damping * vn * vn * dt;
+    out->e_friction += fabs(Ft * vt) * dt;
+    if (fsolid) {
+        if (b < 0) {
+            fsolid[2 * a] -= Fx;
+            fsolid[2 * a + 1] -= Fy;
+        } else {
+            fsolid[2 * a] -= (1 - t) * Fx;
+            fsolid[2 * a + 1] -= (1 - t) * Fy;
+            fsolid[2 * b] -= t * Fx;
+            fsolid[2 * b + 1] -= t * Fy;
+        }
+    }
+}
+
+void pl_sf_polygon_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, const pl_vec2 *vert, int nv,
+                           double dt, double *fsolid, pl_sf_contact_out *out) {
+    memset(out, 0, sizeof *out);
+    const double *x = s->x;
+    double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
+    for (int k = 0; k < nv; k++) {
+        lx = fmin(lx, vert[k].x), hx = fmax(hx, vert[k].x);
+        ly = fmin(ly, vert[k].y), hy = fmax(hy, vert[k].y);
+    }
+    /* 1. grain vertices inside the solid: pushed out through the nearest boundary edge (the
+       penetration measured along that edge's outward normal, at most half its length) */
+    for (int v = 0; v < nv; v++) {
+        const pl_vec2 P = vert[v];
+        int best = -1;
+        double bt = 0, bd = 0;
+        pl_vec2 bn = {0, 0};
+        for (int k = 0; k < s->nbedge; k++) {
+            const int a = s->bedge[2 * k], b = s->bedge[2 * k + 1];
+            const double ax = x[2 * a], ay = x[2 * a + 1], ex = x[2 * b] - ax, ey = x[2 * b + 1] - ay;
+            const double l2 = ex * ex + ey * ey, L = sqrt(l2);
+            if (P.x < fmin(ax, ax + ex) - L || P.x > fmax(ax, ax + ex) + L || P.y < fmin(ay, ay + ey) - L ||
+                P.y > fmax(ay, ay + ey) + L)
+                continue;
+            const double tp = ((P.x - ax) * ex + (P.y - ay) * ey) / l2;
+            if (tp < 0 || tp > 1) continue;
+            const double side = ((P.x - ax) * ey - (P.y - ay) * ex) / L; /* > 0 outside */
+            if (side >= 0 || side < -0.5 * L) continue;
+            if (best < 0 || -side < bd) best = k, bd = -side, bt = tp, bn = (pl_vec2){ey / L, -ex / L};
+        }
+        if (best < 0) continue;
+        point_contact(s, c, vc, omega, dt, P, bn, bd, s->bedge[2 * best], s->bedge[2 * best + 1], bt, fsolid, out);
+    }
+    /* 2. solid boundary nodes inside the (convex, counter-clockwise) grain: pushed out through
+       the grain's nearest edge (a corner of the solid pressing on a face of the grain) */
+    for (int k = 0; k < s->nbedge; k++) {
+        const int a = s->bedge[2 * k];
+        const pl_vec2 N = {x[2 * a], x[2 * a + 1]};
+        if (N.x < lx || N.x > hx || N.y < ly || N.y > hy) continue;
+        double dmin = INFINITY;
+        pl_vec2 nmin = {0, 0};
+        int inside = 1;
+        for (int e = 0; e < nv && inside; e++) {
+            const pl_vec2 A = vert[e], B = vert[(e + 1) % nv];
+            const double ex = B.x - A.x, ey = B.y - A.y, L = hypot(ex, ey);
+            const double dist = ((N.x - A.x) * (-ey) + (N.y - A.y) * ex) / L; /* > 0 inside (CCW) */
+            if (dist <= 0) inside = 0;
+            else if (dist < dmin) dmin = dist, nmin = (pl_vec2){ey / L, -ex / L}; /* outward of the grain */
+        }
+        if (!inside) continue;
+        /* only at a convex corner of the solid (a left turn of more than 20 degrees): along a
+           flat stretch the grain's vertices already carry the contact (pass 1) */
+        const int b = s->bedge[2 * k + 1];
+        int prev = -1;
+        for (int k2 = 0; k2 < s->nbedge && prev < 0; k2++)
+            if (s->bedge[2 * k2 + 1] == a) prev = s->bedge[2 * k2];
+        if (prev < 0) continue;
+        const double ux = N.x - x[2 * prev], uy = N.y - x[2 * prev + 1], wx = x[2 * b] - N.x, wy = x[2 * b + 1] - N.y;
+        if (!(ux * wy - uy * wx > 0.342 * hypot(ux, uy) * hypot(wx, wy))) continue;
+        /* the node pushes the grain inwards: n = -(outward normal of the grain's nearest edge) */
+        point_contact(s, c, vc, omega, dt, N, (pl_vec2){-nmin.x, -nmin.y}, dmin, a, -1, 0, fsolid, out);
+    }
+}
+
 /* ---------------------------------------------------------------- hash */
 
 uint64_t pl_sf_hash(const pl_sf *s, uint64_t h) {
@@ -238,6 +342,7 @@ uint64_t pl_sf_hash(const pl_sf *s, uint64_t h) {
     h = pl_hash_bytes(h, s->v, sizeof *s->v * 2 * N);
     h = pl_hash_bytes(h, s->p, sizeof *s->p * N);
     h = pl_hash_bytes(h, s->pi, sizeof *s->pi * 2 * N);
+    h = pl_hash_bytes(h, s->gv, sizeof *s->gv * N);
     h = pl_hash_bytes(h, s->f_prev, sizeof *s->f_prev * 2 * N);
     h = pl_hash_bytes(h, s->s, sizeof *s->s * 4 * I);
     h = pl_hash_bytes(h, s->pe, sizeof *s->pe * I);
