@@ -22,7 +22,7 @@ return {
   name = "solid_step",
   kind = "stability",
   title = "Explicit FE solid (steel cantilever, linear triangles)",
-  quantity = "largest (kinetic + elastic) / initial kinetic energy",
+  quantity = "largest (kinetic + elastic) / after the first step",
   unit = "1",
   sweep = { knob = "time step", unit = "s", values = { 0.3, 0.6, 0.9, 0.95, 0.99, 1.01, 1.05, 1.1, 1.5 } },
   run = function(_, res)
