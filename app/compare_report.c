@@ -193,6 +193,11 @@ static int chart_accuracy(const pl_cmp_results *r, int pi, const char *dir)
     d.legend = 1;
     d.width = 900;
     d.height = 620;
+    /* one label per decade on the error axis: give each decade room (about 36 px) */
+    if (d.ymax > d.ymin && d.ymin > 0) {
+        const int need = (int)(36 * log10(d.ymax / d.ymin)) + 140;
+        if (need > d.height) d.height = need > 1400 ? 1400 : need;
+    }
     char path[1200], err[256];
     snprintf(path, sizeof path, "%s/%s.png", dir, p->name);
     int rc = pl_chart_write(path, &d, err, sizeof err);
@@ -235,16 +240,23 @@ static int chart_stability(const pl_cmp_results *r, int pi, const char *dir)
         const pl_cmp_row *w = &r->rows[i];
         if (w->problem != pi) continue;
         knob = w->knob;
+        /* a run the guards or the model stopped before it gave a measure (0 or not finite) has
+           no point; the failure line marks it */
+        if (!(w->value > 0) || !isfinite(w->value)) continue;
         x[n] = w->ratio;
         y[n] = fmax(w->value, FLOOR_ERR);
-        if (isfinite(y[n])) {
-            lo = fmin(lo, y[n]);
-            hi = fmax(hi, y[n]);
-        }
+        lo = fmin(lo, y[n]);
+        hi = fmax(hi, y[n]);
         n++;
     }
     double st, fl, lim;
     boundary(r, pi, &st, &fl, &lim);
+    /* the first failure: refused by the run-time check, or measured */
+    int refused = 0;
+    for (int i = 0; i < r->nrows; i++)
+        if (r->rows[i].problem == pi && r->rows[i].failed && r->rows[i].ratio == fl &&
+            strncmp(r->rows[i].note, "refused", 7) == 0)
+            refused = 1;
     if (!(hi > lo)) {
         lo = 1e-3;
         hi = 1e3;
@@ -257,7 +269,8 @@ static int chart_stability(const pl_cmp_results *r, int pi, const char *dir)
     ser[0] = (pl_chart_series){mname, x, y, n, PL_SERIES_LINE_POINTS, PALETTE[0], 2};
     ser[1] = (pl_chart_series){"computed limit", lx, ly, 2, PL_SERIES_DASHED, {0, 0, 0, 1}, 1.5};
     char fname[96];
-    snprintf(fname, sizeof fname, "measured failure (%.3g x limit)", fl);
+    snprintf(fname, sizeof fname, refused ? "refused by the run-time check (from %.3g x limit)" : "measured failure (%.3g x limit)",
+             fl);
     ser[2] = (pl_chart_series){fname, fx, ly, 2, PL_SERIES_LINE, PALETTE[1], 2};
     pl_chart_def d = pl_default_chart_def();
     char xlabel[200];

@@ -10,14 +10,18 @@
  * The choice is made when the scene is loaded (or at its first step), before anything runs,
  * and explained (with the rejected alternatives) in porelab info and the run summary. A scene
  * that fixes Darcy where its assumptions break (Re_p > 10) gets a warning with the number.
- * The resolved models (Stokes by boundary elements, Navier-Stokes) are named when they are the
- * answer, but auto does not set them up yet (they need the container and the grain cores):
- * MODELS below is where they join. */
+ * For the flow between grains auto attaches a resolved model: Stokes by boundary elements for
+ * creeping flow (Re_p < 1; the container is the scene's walls, closed by a lid at the water level
+ * when the tank is open, the grains shrunk by an artificial gap so that touching grains leave a
+ * channel), Navier-Stokes otherwise (the water region as its box, open at the top). A scene that
+ * fixes Stokes flow where inertia matters (Re_p > 1) gets a warning with the number. */
 #include "fluid_auto.h"
 #include "lua_util.h"
 #include "porelab/darcy.h"
 #include "porelab/fluid.h"
 #include "porelab/hydrostatic.h"
+#include "porelab/navier_stokes.h"
+#include "porelab/stokes.h"
 #include "wrap.h"
 
 #include <lauxlib.h>
@@ -28,9 +32,8 @@
 
 #define NOTES_KEY "porelab.fluid_notes"
 
-/* The rungs of the ladder, cheapest first. available = 0: "auto" cannot set the model up yet
-   (the resolved models exist, w:stokes{} and w:navier_stokes{}, but need the scene's container
-   and grain cores; set it to 1 with an attach below to let "auto" choose them). */
+/* The rungs of the ladder, cheapest first. available = 0: "auto" cannot set the model up (it
+   then falls back to the closest one that it can, and says so). */
 enum { M_HYDROSTATIC, M_DARCY, M_DARCY_CONS, M_STOKES, M_NAVIER_STOKES, M_COUNT };
 static const struct {
     const char *name, *what;
@@ -39,8 +42,8 @@ static const struct {
     {"hydrostatic", "still water, exact buoyancy, no mesh (w:water)", 1},
     {"darcy", "Darcy seepage on a mesh (w:darcy)", 1},
     {"darcy+consolidation", "Darcy with pore pressure from skeleton volume change", 1},
-    {"stokes", "resolved Stokes flow by boundary elements (w:stokes)", 0},
-    {"navier_stokes", "resolved Navier-Stokes flow (w:navier_stokes)", 0},
+    {"stokes", "resolved Stokes flow by boundary elements (w:stokes)", 1},
+    {"navier_stokes", "resolved Navier-Stokes flow (w:navier_stokes)", 1},
 };
 
 static const char *const NEEDS[] = {"buoyancy", "seepage", "pore_pressure", "flow_between_grains", NULL};
@@ -236,6 +239,83 @@ static int attach_darcy(lua_State *L, pl_world *w, double x0, double x1, double 
     return nx * ny * 2;
 }
 
+/* Stokes by boundary elements: the container is the world's walls; an open tank gets a lid at
+   the water level (a no-slip lid: Stokes flow needs a closed container, docs/stokes.md). The
+   grains' outlines shrink by gap / 2 (Tan's artificial gap, seed 003 §3.4): a tenth of the mean
+   grain radius, so that grains in contact leave a channel. Returns 1 when a lid was added. */
+static int attach_stokes(lua_State *L, pl_world *w, double x0, double x1, double lvl, double rho, double mu, double d,
+                         double *dt_cap)
+{
+    int lid = 1, mat = -1;
+    const int nb = pl_world_body_count(w);
+    for (int i = 0; i < nb; i++) {
+        pl_body_info b;
+        if (pl_world_body_info(w, i, &b) != PL_OK || b.shape != PL_SHAPE_SEGMENT) continue;
+        pl_vec2 e[2];
+        if (pl_world_body_vertices(w, i, e, 2) != 2) continue;
+        if (mat < 0) mat = b.material;
+        const double tol = 1e-6 * fmax(1.0, x1 - x0);
+        /* a wall already closes the top at or below the water level */
+        if (fabs(e[0].y - e[1].y) < tol && e[0].y <= lvl + tol && e[0].y > lvl - 0.5 * (x1 - x0) &&
+            fmin(e[0].x, e[1].x) <= x0 + tol && fmax(e[0].x, e[1].x) >= x1 - tol)
+            lid = 0;
+    }
+    if (lid) {
+        pl_body_def b = pl_default_body_def();
+        b.shape = PL_SHAPE_SEGMENT;
+        b.motion = PL_MOTION_FIXED;
+        b.material = mat >= 0 ? mat : 0;
+        const double e = 0.01 * (x1 - x0);
+        b.a = (pl_vec2){x1 + e, lvl};
+        b.b = (pl_vec2){x0 - e, lvl};
+        if (pl_world_add_body(w, &b) < 0) pl_lua_check_status(L, w, PL_ERR_ARG, "world (fluid = \"auto\")");
+    }
+    pl_stokes_def sd = pl_default_stokes_def();
+    sd.viscosity = mu;
+    sd.density = rho;
+    if (d > 0) sd.gap = 0.05 * d;
+    pl_lua_check_status(L, w, pl_world_attach_stokes(w, &sd), "world (fluid = \"auto\")");
+    /* the explicit drag's limit (docs/stokes.md): one solve gives every grain's 2 m / K; the
+       grain step is capped at half the smallest (MAX_DT_CR) */
+    pl_lua_check_status(L, w, pl_world_stokes_solve(w), "world (fluid = \"auto\")");
+    double safe = INFINITY;
+    for (int i = 0; i < pl_world_body_count(w); i++) {
+        pl_body_info b;
+        pl_stokes_body_result r;
+        if (pl_world_body_info(w, i, &b) != PL_OK || b.motion != PL_MOTION_DYNAMIC) continue;
+        if (pl_world_stokes_body(w, i, &r) == PL_OK && r.dt_safe > 0) safe = fmin(safe, r.dt_safe);
+    }
+    *dt_cap = 0;
+    double cap = 0;
+    pl_world_get_flag(w, "MAX_DT_CR", &cap);
+    if (isfinite(safe) && (!(cap > 0) || cap > 0.5 * safe)) {
+        *dt_cap = 0.5 * safe;
+        pl_world_set_flag(w, "MAX_DT_CR", *dt_cap);
+    }
+    return lid;
+}
+
+/* Navier-Stokes: the water region is the box (walls below and at the sides, open at the top);
+   the mesh about a sixth of a grain diameter on the grains' cores, growing to a diameter. */
+static void attach_navier_stokes(lua_State *L, pl_world *w, double x0, double x1, double y0, double lvl, double rho,
+                                 double mu, double d)
+{
+    pl_navier_stokes_def nd = pl_default_navier_stokes_def();
+    nd.x_min = x0;
+    nd.x_max = x1;
+    nd.y_min = y0;
+    nd.y_max = lvl;
+    nd.density = rho;
+    nd.viscosity = mu;
+    nd.open_top = 1;
+    if (d > 0) {
+        nd.h_near = d / 6;
+        nd.h_far = fmax(d, nd.h_near);
+        nd.grade_distance = d;
+    }
+    pl_lua_check_status(L, w, pl_world_attach_navier_stokes(w, &nd), "world (fluid = \"auto\")");
+}
+
 static double gravity(const pl_world *w)
 {
     double gx = 0, gy = 0;
@@ -243,8 +323,6 @@ static double gravity(const pl_world *w)
     pl_world_get_flag(w, "GRAVITY_Y", &gy);
     return fmax(hypot(gx, gy), 1e-12);
 }
-
-static const char *avail(int m) { return MODELS[m].available ? "" : " (not set up by auto yet: attach it by hand)"; }
 
 int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
 {
@@ -301,23 +379,24 @@ int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
             snprintf(why, sizeof why, "no flow expected (no head difference): buoyancy is the still-water outline integral");
             snprintf(rejected, sizeof rejected,
                      "darcy: the same buoyancy on a mesh, about 100x the cost (docs/compare.md, problem buoyancy); "
-                     "stokes%s, navier_stokes%s: not needed", avail(M_STOKES), avail(M_NAVIER_STOKES));
+                     "stokes, navier_stokes: not needed (they resolve the flow there is none of)");
         }
         break;
     case N_SEEPAGE:
         pick = M_DARCY;
         if (G.Re_p > 10) {
             snprintf(why, sizeof why,
-                     "Re_p = %.3g is past Darcy's range (Re_p < 1-10, Bear 1972): navier_stokes would answer it but "
-                     "auto does not set it up yet (w:navier_stokes{}); Darcy is the closest model that is (expect the drag to be too low)",
+                     "Re_p = %.3g is past Darcy's range (Re_p < 1-10, Bear 1972): the drag grows faster than the flow, "
+                     "which Darcy leaves out (expect it too low); Darcy is still the only averaged model; navier_stokes "
+                     "resolves it (needs = \"flow_between_grains\"), meshing every pore",
                      G.Re_p);
         } else {
             snprintf(why, sizeof why, "seepage forces at Re_p = %.3g < 10: Darcy's law holds", G.Re_p);
         }
         snprintf(rejected, sizeof rejected,
-                 "hydrostatic: has no flow, so no seepage force; stokes%s, navier_stokes%s: resolve the pores, "
-                 "far more costly than a Darcy mesh of several grains per element",
-                 avail(M_STOKES), avail(M_NAVIER_STOKES));
+                 "hydrostatic: has no flow, so no seepage force; stokes, navier_stokes: resolve the pores, "
+                 "far more costly than a Darcy mesh of several grains per element (docs/compare.md, problem fixed_bed: "
+                 "thousands of times the cost)");
         break;
     case N_PORE_PRESSURE:
         if (G.t_c < 0.1 * dur) {
@@ -342,7 +421,22 @@ int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
         pick = G.Re_p < 1 ? M_STOKES : M_NAVIER_STOKES; /* creeping flow below Re_p ~ 1 */
         snprintf(why, sizeof why, "the flow between grains needs a resolved model: %s at Re_p = %.3g", MODELS[pick].name,
                  G.Re_p);
-        snprintf(rejected, sizeof rejected, "hydrostatic: no flow; darcy: averages the flow over elements of several grains");
+        if (pick == M_STOKES)
+            snprintf(why, sizeof why,
+                     "the flow between grains needs a resolved model; at Re_p = %.3g < 1 inertia is negligible, so "
+                     "creeping (Stokes) flow by boundary elements: only the outlines carry unknowns",
+                     G.Re_p);
+        else
+            snprintf(why, sizeof why,
+                     "the flow between grains needs a resolved model; at Re_p = %.3g >= 1 inertia matters (Stokes flow "
+                     "drops it), so Navier-Stokes on a mesh of the pore space",
+                     G.Re_p);
+        snprintf(rejected, sizeof rejected,
+                 "hydrostatic: no flow; darcy: averages the flow over elements of several grains, and its "
+                 "Kozeny-Carman permeability is 2.9 times the resolved one in the fixed bed of docs/compare.md; %s",
+                 pick == M_STOKES ? "navier_stokes: the same creeping flow on a mesh of the pore space, about 10 times "
+                                    "the cost at the same error (docs/compare.md, problem fixed_bed)"
+                                  : "stokes: leaves out inertia, wrong at this Re_p");
         if (!MODELS[pick].available) {
             char tmp[768];
             snprintf(tmp, sizeof tmp, "%s, which auto does not set up yet (attach w:%s{} by hand); falling back to darcy (the flow "
@@ -353,9 +447,20 @@ int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
         break;
     }
     int elements = 0;
+    char mesh[256] = "";
     if (pick == M_HYDROSTATIC) attach_hydrostatic(L, lw->w, x0, x1, y0, lvl, rho);
-    else elements = attach_darcy(L, lw->w, x0, x1, y0, lvl, rho, mu, K, Kf, dh, G.d, pick == M_DARCY_CONS);
-    char mesh[96] = "";
+    else if (pick == M_STOKES) {
+        double cap = 0;
+        const int lid = attach_stokes(L, lw->w, x0, x1, lvl, rho, mu, G.d, &cap);
+        char captxt[96] = "";
+        if (cap > 0) snprintf(captxt, sizeof captxt, ", grain step <= %.3g s (half the drag limit 2 m/K)", cap);
+        snprintf(mesh, sizeof mesh, ", gap %.3g m%s%s", 0.05 * G.d, lid ? ", a lid at the water level closes the tank" : "",
+                 captxt);
+    } else if (pick == M_NAVIER_STOKES) {
+        attach_navier_stokes(L, lw->w, x0, x1, y0, lvl, rho, mu, G.d);
+        snprintf(mesh, sizeof mesh, ", mesh %.3g m on the grains, open top", G.d / 6);
+    } else
+        elements = attach_darcy(L, lw->w, x0, x1, y0, lvl, rho, mu, K, Kf, dh, G.d, pick == M_DARCY_CONS);
     if (elements) snprintf(mesh, sizeof mesh, ", %d elements", elements);
     pl_lua_fluid_auto_note(L, "  fluid auto     needs %s: %s%s: %s", NEEDS[needs], MODELS[pick].name, mesh, why);
     pl_lua_fluid_auto_note(L, "                 groups: %s", groups_txt);
@@ -363,9 +468,35 @@ int pl_lua_fluid_auto_apply(lua_State *L, int world_idx, double duration)
     return 1;
 }
 
+/* A scene that fixes Stokes flow where inertia matters: Re_p from the grains' settling speed
+   (grains apart) or the fastest body (moving walls, a grain set going) above 1. */
+static void check_stokes(lua_State *L, pl_world *w)
+{
+    pl_stokes_def sd;
+    if (!pl_world_has_stokes(w) || pl_world_stokes_def(w, &sd) != PL_OK) return;
+    groups G = compute(w, -1e30, 1e30, -1e30, 1e30, sd.density, sd.viscosity, 0, 0, 0, gravity(w));
+    if (G.grains == 0) return;
+    double vmax = 0;
+    const int nb = pl_world_body_count(w);
+    for (int i = 0; i < nb; i++) {
+        pl_body_info b;
+        if (pl_world_body_info(w, i, &b) == PL_OK) vmax = fmax(vmax, hypot(b.velocity.x, b.velocity.y));
+    }
+    const double U = fmax(G.loose ? G.U_settle : 0, vmax);
+    const double re = sd.density * U * G.d / sd.viscosity;
+    if (re > 1)
+        pl_lua_fluid_auto_note(L,
+                               "  warning        Stokes flow at a particle Reynolds number Re_p = %.3g (grains d = %.3g m, "
+                               "speed scale %.3g m/s, viscosity %.3g Pa s): Stokes flow leaves out inertia and holds for "
+                               "Re_p << 1; suggested model: navier_stokes (w:navier_stokes{}, or fluid = \"auto\" with "
+                               "needs = \"flow_between_grains\")",
+                               re, G.d, U, sd.viscosity);
+}
+
 void pl_lua_fluid_check_assumptions(lua_State *L, int world_idx)
 {
     pl_lua_world *lw = pl_lua_check_world(L, world_idx);
+    check_stokes(L, lw->w);
     pl_darcy_def d;
     pl_world_get_darcy(lw->w, &d);
     if (!d.on || d.perm_units || d.perm_mode != 0) return; /* uniform conductivity only: K = FLUID_PERM_HIGH */

@@ -7,6 +7,23 @@ pl_cli_test(compare_quick RC 0
   MATCH "darcy_explicit +cells along the rod = 10 "
   MATCH2 "\\| wave \\| darcy_"
   EXPECT_FILE ${PL_CLI_OUT}/compare/wave.png)
+# The resolved models on the shared problems (two resolutions each): the fixed bed's
+# permeability against Drummond & Tahir (1984) -- Stokes boundary elements within 10 % at 8
+# elements per disc and 3 % at 16, Navier-Stokes within 10 % at h = 0.4 a; Darcy's Kozeny-Carman
+# law 2.9 times too permeable -- and the settling disc by boundary elements within 7 % / 2 %
+# of Faxen's speed.
+pl_cli_test(compare_fixed_bed_quick RC 0
+  ARGS compare ${PL_CMP}/problems/fixed_bed.lua --only stokes,darcy_kc --quick --out ${PL_CLI_OUT}/compare_fixed_bed
+  MATCH "stokes +elements per disc = 16 +value [0-9.e-]+ +error 0.0[0-2][0-9]* "
+  MATCH2 "darcy_kc +array spacings per mesh cell = 1 +value [0-9.e-]+ +error 1.8[0-9]* "
+  EXPECT_FILE ${PL_CLI_OUT}/compare_fixed_bed/fixed_bed.png)
+pl_cli_test(compare_fixed_bed_navier_stokes RC 0
+  ARGS compare ${PL_CMP}/problems/fixed_bed.lua --only navier_stokes --quick --out ${PL_CLI_OUT}/compare_fixed_bed_ns
+  MATCH "navier_stokes +mesh size on the discs / radius = 0.4 +value [0-9.e-]+ +error 0.0[0-4][0-9]* ")
+pl_cli_test(compare_settling_stokes RC 0
+  ARGS compare ${PL_CMP}/problems/settling.lua --only stokes --quick --out ${PL_CLI_OUT}/compare_settling_stokes
+  MATCH "stokes +elements per disc = 8 +value [0-9.e-]+ +error 0.0[0-6][0-9]* "
+  MATCH2 "stokes +elements per disc = 16 +value [0-9.e-]+ +error 0.0[0-1][0-9]* ")
 pl_cli_test(compare_bad_problem RC 1 ARGS compare ${PL_CMP}/guards/servo_gain.lua --out ${PL_CLI_OUT}/compare_bad
   MATCH "servo_gain.lua: the problem table needs a name")
 pl_cli_test(compare_usage RC 2 ARGS compare --bogus MATCH "unknown option '--bogus'")
@@ -19,11 +36,28 @@ pl_cli_test(stability_sweeps RC 0
   MATCH "Grain step, translation [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\|"
   MATCH2 "staggering [^|]*\\| [0-9.e-]+ s \\| 0.9[05]? \\| (0.95|1) \\|")
 
+# The servo wall on one stiff contact fails between 0.99 and 1.01 of its computed gain limit
+# 2 F / (k dt); a polygon face on the floor between 0.5 and 0.55 of the grain step's computed
+# limit 2 sqrt(m / kn) (the area law's face spring is stiffer than kn); the Stokes drag coupling
+# between 0.9 and 0.94 of 2 m / K; the explicit solid runs stably up to 0.99 of its critical
+# step and is refused above it (docs/stability.md).
+pl_cli_test(stability_sweeps_more RC 0
+  ARGS compare ${PL_CMP}/stability/servo_gain.lua ${PL_CMP}/stability/polygon_area.lua
+       ${PL_CMP}/stability/stokes_drag.lua ${PL_CMP}/stability/solid_step.lua --out ${PL_CLI_OUT}/stability_more
+  MATCH "Servo wall [^|]*\\| 20 m/s \\| 0.99 \\| 1.01 \\|.*Grain step, polygon [^|]*\\| [0-9.e-]+ s \\| 0.5 \\| 0.55 \\|"
+  MATCH2 "Stokes drag coupling [^|]*\\| [0-9.e-]+ s \\| 0.9 \\| 0.94 \\|.*Explicit FE solid [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\| refused")
+
 # Each run-time limit: past it the message names what, where and the safe setting.
 pl_cli_test(guard_grain_step RC 1 ARGS run tests/cli/bad/unstable.lua --quiet --out ${PL_CLI_OUT}/guard_grain
   MATCH "unstable: .*critical step .*a safe step is [0-9.e-]+ s")
 pl_cli_test(guard_servo_gain RC 1 ARGS run ${PL_CMP}/guards/servo_gain.lua --quiet --out ${PL_CLI_OUT}/guard_servo
   MATCH "unstable servo: body 3 .*G k dt / F = 20 exceeds its stability limit 2 .*a safe gain is G <= F / \\(k dt\\) = 10 m/s")
+pl_cli_test(guard_polygon_step RC 1 ARGS run ${PL_CMP}/guards/polygon_step.lua --quiet --out ${PL_CLI_OUT}/guard_polygon
+  MATCH "unstable: .*likely cause: the time step [0-9.e-]+ s is 0.8 times the critical step .*a safe step is [0-9.e-]+ s")
+pl_cli_test(guard_stokes_drag RC 1 ARGS run ${PL_CMP}/guards/stokes_drag.lua --quiet --out ${PL_CLI_OUT}/guard_stokes_drag
+  MATCH "stokes: explicit drag unstable .*needs solve_every x dt < 2 min\\(m/K, I/K_rot\\) = 0.00248[0-9]* s, but it is 1 x 0.003 s; use dt <= [0-9.e-]+ s")
+pl_cli_test(guard_solid_step RC 1 ARGS run ${PL_CMP}/guards/solid_step.lua --quiet --out ${PL_CLI_OUT}/guard_solid
+  MATCH "solid: the time step 2e-06 s exceeds the critical step 1.09[0-9]*e-06 s of element [0-9]+ .*Set dt <= [0-9.e-]+ s")
 pl_cli_test(guard_servo_gain_safe RC 0 ARGS run ${PL_CMP}/guards/servo_gain_safe.lua --quiet --out ${PL_CLI_OUT}/guard_servo_safe)
 pl_cli_test(guard_stagger RC 1 ARGS run ${PL_CMP}/guards/stagger.lua --quiet --out ${PL_CLI_OUT}/guard_stagger
   MATCH "undrained grain-water coupling is past its staggering limit .*0.0001 s x 4 .*safe: a grain step dt <= [0-9.e-]+ s with FLUID_SOLVE_TIMESTEPS 1, or FLUID_BULK_MODULUS <= [0-9.e+]+ Pa")
@@ -38,14 +72,15 @@ pl_add_c_test(test_stability_explicit_darcy SOURCES ${PL_TEST_DIR}/compare/test_
 target_include_directories(test_stability_explicit_darcy PRIVATE ${CMAKE_SOURCE_DIR}/app ${CMAKE_SOURCE_DIR}/app/render ${CHOLMOD_INCLUDE})
 target_link_libraries(test_stability_explicit_darcy PRIVATE porelab_render)
 
-# fluid = "auto": the choice pinned on seven scenes (porelab info prints it with the reasons).
+# fluid = "auto": the choice pinned on eight scenes (porelab info prints it with the reasons).
 foreach(case "floating;buoyancy: hydrostatic: no flow expected"
              "buoyancy_head;buoyancy: darcy, [0-9]+ elements: a head difference of 0.05 m drives flow"
              "seepage;seepage: darcy, [0-9]+ elements: seepage forces at Re_p = [0-9.]+ < 10"
-             "fast_seepage;seepage: darcy, [0-9]+ elements: Re_p = [0-9.e+]+ is past Darcy's range .*navier_stokes would answer it but auto does not set it up yet"
+             "fast_seepage;seepage: darcy, [0-9]+ elements: Re_p = [0-9.e+]+ is past Darcy's range .*navier_stokes resolves it"
              "undrained;pore_pressure: darcy\\+consolidation, [0-9]+ elements: t_c = [0-9.e+]+ s is [0-9.e+]+ times the duration 2 s.*\\(undrained\\)"
              "drained;pore_pressure: hydrostatic: drained: excess pore pressure dissipates in t_c = [0-9.e-]+ s"
-             "between;flow_between_grains: darcy, [0-9]+ elements: .*stokes at Re_p = [0-9.e-]+, which auto does not set up yet")
+             "between;flow_between_grains: stokes, gap 0.001 m, a lid at the water level closes the tank, grain step <= [0-9.e-]+ s \\(half the drag limit 2 m/K\\): .*at Re_p = [0-9.e-]+ < 1 inertia is negligible"
+             "between_fast;flow_between_grains: navier_stokes, mesh [0-9.e-]+ m on the grains, open top: .*at Re_p = [0-9.e+]+ >= 1 inertia matters")
   list(GET case 0 scene)
   list(GET case 1 expect)
   pl_cli_test(auto_${scene} RC 0 ARGS info ${PL_CMP}/auto/${scene}.lua
@@ -63,15 +98,25 @@ pl_cli_test(auto_bad_needs RC 1 ARGS info ${PL_CMP}/auto/bad_needs.lua
 # to use instead.
 pl_cli_test(auto_warn_darcy_re RC 0 ARGS info scenes/lab/buoyancy_darcy.lua
   MATCH "warning +Darcy at a particle Reynolds number Re_p = [0-9.e+]+ .*suggested model: hydrostatic")
+pl_cli_test(auto_warn_stokes_re RC 0 ARGS info ${PL_CMP}/auto/stokes_inertia.lua
+  MATCH "warning +Stokes flow at a particle Reynolds number Re_p = 6.68e\\+03 .*suggested model: navier_stokes")
+# the resolved models chosen by auto set up and step (two steps each)
+pl_cli_test(auto_run_stokes RC 0 ARGS run ${PL_CMP}/auto/between.lua --steps 2 --quiet --out ${PL_CLI_OUT}/auto_stokes
+  MATCH "fluid auto +needs flow_between_grains: stokes")
+pl_cli_test(auto_run_navier_stokes RC 0 ARGS run ${PL_CMP}/auto/between_fast.lua --steps 2 --quiet --out ${PL_CLI_OUT}/auto_ns
+  MATCH "fluid auto +needs flow_between_grains: navier_stokes")
 
 # docs/compare/ and the tables of docs/compare.md, regenerated by one command:
 #   cmake --build build --target compare_docs
 # (every problem with every method, the stability sweeps, the explicit Darcy sweep's chart).
 add_custom_target(compare_docs
   COMMAND $<TARGET_FILE:porelab> compare tests/compare/problems/buoyancy.lua tests/compare/problems/settling.lua
+          tests/compare/problems/fixed_bed.lua
           tests/compare/problems/wave.lua tests/compare/problems/terzaghi.lua tests/compare/problems/restitution.lua
           tests/compare/problems/energy.lua tests/compare/stability/grain_translation.lua
-          tests/compare/stability/grain_rotation.lua tests/compare/stability/undrained_stagger.lua
+          tests/compare/stability/grain_rotation.lua tests/compare/stability/polygon_area.lua
+          tests/compare/stability/undrained_stagger.lua tests/compare/stability/servo_gain.lua
+          tests/compare/stability/stokes_drag.lua tests/compare/stability/solid_step.lua
           --out docs/compare --update-doc docs/compare.md
   COMMAND $<TARGET_FILE:test_stability_explicit_darcy> docs/compare
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}

@@ -1,4 +1,4 @@
--- fluid = "auto" (docs/compare.md): seepage through coarse gravel (conductivity 0.5 m/s): Re_p past Darcy's range; Navier-Stokes would answer it but auto does not set it up yet, so Darcy with a note.
+-- fluid = "auto" (docs/compare.md): seepage through coarse gravel (conductivity 0.5 m/s): Re_p past Darcy's range; Darcy is still the only averaged model (Navier-Stokes would resolve every pore), so Darcy with a note.
 -- A tank 0.4 m wide with water to 0.3 m; a bed of 2650 discs of radius 0.01 m, 3 rows.
 -- porelab chooses the fluid model from the question; `porelab info` explains the choice.
 local w = porelab.world { gravity = { 0, -9.81 }, fluid = "auto", needs = "seepage",
