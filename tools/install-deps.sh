@@ -12,8 +12,9 @@ PKGS=(
   libosmesa6-dev libsdl2-dev
   libgmsh-dev liblapack-dev liblapacke-dev
 )
-# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps.
-OPTIONAL=(ffmpeg xvfb xdotool parallel)
+# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps;
+# liggghts: the grain benchmark's peer (tests/bench/run_liggghts.sh).
+OPTIONAL=(ffmpeg xvfb xdotool parallel liggghts)
 missing=()
 for p in "${PKGS[@]}" "${OPTIONAL[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -38,8 +38,8 @@ typedef struct pl_disc_ctx {
 } pl_disc_ctx;
 
 static inline __attribute__((always_inline)) void pl__apply(pl_disc_ctx *c, const pl_contact_out *o, int a, int b) {
-    pl__apply_end(c->force, c->torque, c->tally, c->track, o, b, 1);
-    pl__apply_end(c->force, c->torque, c->tally, c->track, o, a, 0);
+    pl__apply_end(c->force, c->torque, c->tally, c->track, &o->add, b, 1);
+    pl__apply_end(c->force, c->torque, c->tally, c->track, &o->add, a, 0);
 }
 
 /* The sums over pairs (spring energies, the worst overlap), in pair order. */
@@ -78,21 +78,21 @@ static inline double pl__cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y *
    zeta = 0.3, 0.01 x critical). wall: the segment's index or -1. The additions go to o. */
 static inline __attribute__((always_inline)) void pl__release(pl_disc_ctx *c, pl_pair *p, double dt, int a, int b,
                                                                int wall, pl_contact_out *o, int apply) {
-    o->flags = 0;
+    o->add.flags = 0;
     if (!p->touching) return;
     if (p->cn > 0 && p->overlap > 0) {
         const double fn = -p->cn * p->overlap / dt; /* on b along n: a pull */
         const pl_vec2 n = p->normal;
         const pl_vec2 F = {fn * n.x, fn * n.y};
-        o->flags = PL_OUT_F | PL_OUT_FD;
-        o->tqa = o->tqb = o->dma = o->dmb = 0;
-        o->fx = o->dfx = F.x;
-        o->fy = o->dfy = F.y;
+        o->add.flags = PL_OUT_F | PL_OUT_FD;
+        o->add.tqa = o->add.tqb = o->add.dma = o->add.dmb = 0;
+        o->add.fx = o->add.dfx = F.x;
+        o->add.fy = o->add.dfy = F.y;
         if (wall >= 0) {
             const pl_vec2 rw = {p->point.x - c->pos[wall].x, p->point.y - c->pos[wall].y};
             const double mw = (wall == b ? 1 : -1) * pl__cross2(rw, F);
-            if (wall == b) o->flags |= PL_OUT_TQB | PL_OUT_DMB, o->tqb = o->dmb = mw;
-            else o->flags |= PL_OUT_TQA | PL_OUT_DMA, o->tqa = o->dma = mw;
+            if (wall == b) o->add.flags |= PL_OUT_TQB | PL_OUT_DMB, o->add.tqb = o->add.dmb = mw;
+            else o->add.flags |= PL_OUT_TQA | PL_OUT_DMA, o->add.tqa = o->add.dma = mw;
         }
         if (apply) pl__apply(c, o, a, b);
     }
@@ -143,7 +143,7 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
         p->mr = mr;
         if (kr > 0) es += 0.5 * mr * mr / kr;
         flags |= PL_OUT_ROLL;
-        o->mr = mr;
+        o->add.mr = mr;
     }
     p->fs = fs;
     p->fn = fn;
@@ -156,31 +156,31 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
     o->es = es;
     o->en = en;
     const pl_vec2 t = {-n.y, n.x};
-    o->fx = fn * n.x + ft * t.x;
-    o->fy = fn * n.y + ft * t.y;
-    o->dfx = fn_d * n.x + fd * t.x;
-    o->dfy = fn_d * n.y + fd * t.y;
-    o->sfx = fs * t.x;
-    o->sfy = fs * t.y;
+    o->add.fx = fn * n.x + ft * t.x;
+    o->add.fy = fn * n.y + ft * t.y;
+    o->add.dfx = fn_d * n.x + fd * t.x;
+    o->add.dfy = fn_d * n.y + fd * t.y;
+    o->add.sfx = fs * t.x;
+    o->add.sfy = fs * t.y;
     if (wall_r) {
         /* moment on the wall from +F (wall b) or -F (wall a) about its centroid */
-        const pl_vec2 F = {o->fx, o->fy}, Fd = {o->dfx, o->dfy}, Fs = {o->sfx, o->sfy};
+        const pl_vec2 F = {o->add.fx, o->add.fy}, Fd = {o->add.dfx, o->add.dfy}, Fs = {o->add.sfx, o->add.sfy};
         const double sgn = wall_end == 1 ? 1 : -1;
         const double tw = sgn * pl__cross2(*wall_r, F), tk = -((wall_end == 1 ? arm_a : arm_b) * ft);
         const double dw = sgn * pl__cross2(*wall_r, Fd), dk = -((wall_end == 1 ? arm_a : arm_b) * fd);
         const double sw = sgn * pl__cross2(*wall_r, Fs), sk = -((wall_end == 1 ? arm_a : arm_b) * fs);
-        if (wall_end == 1) o->tqb = tw, o->tqa = tk, o->dmb = dw, o->dma = dk, o->smb = sw, o->sma = sk;
-        else o->tqa = tw, o->tqb = tk, o->dma = dw, o->dmb = dk, o->sma = sw, o->smb = sk;
+        if (wall_end == 1) o->add.tqb = tw, o->add.tqa = tk, o->add.dmb = dw, o->add.dma = dk, o->add.smb = sw, o->add.sma = sk;
+        else o->add.tqa = tw, o->add.tqb = tk, o->add.dma = dw, o->add.dmb = dk, o->add.sma = sw, o->add.smb = sk;
     } else {
-        o->tqa = -(arm_a * ft);
-        o->tqb = -(arm_b * ft);
-        o->dma = -(arm_a * fd);
-        o->dmb = -(arm_b * fd);
-        o->sma = -(arm_a * fs);
-        o->smb = -(arm_b * fs);
+        o->add.tqa = -(arm_a * ft);
+        o->add.tqb = -(arm_b * ft);
+        o->add.dma = -(arm_a * fd);
+        o->add.dmb = -(arm_b * fd);
+        o->add.sma = -(arm_a * fs);
+        o->add.smb = -(arm_b * fs);
     }
     o->ratio = delta / rmin;
-    o->flags = flags;
+    o->add.flags = flags;
     if (apply) {
         pl__apply(c, o, a, b);
         pl__account_law(c, o, a, b);

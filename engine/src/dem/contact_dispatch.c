@@ -11,8 +11,8 @@ static inline __attribute__((always_inline)) void account_poly(pl_world *w, cons
                                                                 const pl_contact_out *o, double e_elastic,
                                                                 double *e_poly) {
     *e_poly += e_elastic;
-    if (o->flags & PL_OUT_EFRIC) w->e_friction += o->e_friction;
-    if (o->flags & PL_OUT_POLY) {
+    if (o->add.flags & PL_OUT_EFRIC) w->e_friction += o->e_friction;
+    if (o->add.flags & PL_OUT_POLY) {
         w->e_damped += o->e_damped;
         if (o->ratio > w->worst_overlap_ratio) {
             w->worst_overlap_ratio = o->ratio;
@@ -43,7 +43,8 @@ static void finish(pl_world *w, const pl_disc_ctx *c, double e_poly) {
 typedef struct eval_task {
     pl_world *w;
     pl_disc_ctx c;
-    pl_contact_out *out;
+    pl_contact_add *out;
+    pl_contact_sum *sum;
     uint16_t *flag;
     double dt;
 } eval_task;
@@ -62,18 +63,24 @@ static void eval_range(void *ctx, int begin, int end) {
             pl_contact_out o;
             if (p->kind == PL_PAIR_DISC_DISC) pl__contact_disc_disc(&c, p, pp, t->dt, &o, 0);
             else pl__contact_disc_segment(&c, w, p, pp, t->dt, &o, 0);
-            t->flag[k] = (uint16_t)o.flags;
-            if (o.flags) t->out[k] = o;
+            t->flag[k] = (uint16_t)o.add.flags;
+            if (o.add.flags) {
+                t->out[k] = o.add;
+                t->sum[k] = o.add.flags & PL_OUT_LAW ? (pl_contact_sum){o.es, o.en, 0, o.ratio} : (pl_contact_sum){0, 0, 0, 0};
+            }
             break;
         }
         case PL_PAIR_POLY_DISC:
         case PL_PAIR_POLY_POLY:
         case PL_PAIR_POLY_SEGMENT: {
-            pl_contact_out *o = &t->out[k];
-            pl__contact_polygon(w, p, pp, t->dt, o);
-            o->flags |= PL_OUT_POLYKIND;
-            o->e_elastic = p->touching ? p->elastic : 0;
-            t->flag[k] = (uint16_t)o->flags;
+            pl_contact_out o;
+            pl__contact_polygon(w, p, pp, t->dt, &o);
+            o.add.flags |= PL_OUT_POLYKIND;
+            t->flag[k] = (uint16_t)o.add.flags;
+            t->out[k] = o.add;
+            const uint32_t f = o.add.flags;
+            t->sum[k] = (pl_contact_sum){f & PL_OUT_POLY ? o.e_damped : 0, f & PL_OUT_EFRIC ? o.e_friction : 0,
+                                         p->touching ? p->elastic : 0, f & PL_OUT_POLY ? o.ratio : 0};
             break;
         }
         default: t->flag[k] = 0; break;
@@ -85,12 +92,13 @@ static void compute_serial(pl_world *w, double dt);
 
 static void compute_threaded(pl_world *w, double dt) {
     uint16_t *flag;
-    pl_contact_out *out = pl__parallel_slots(w, &flag);
+    pl_contact_sum *sum;
+    pl_contact_add *out = pl__parallel_slots(w, &flag, &sum);
     if (!out) { /* out of memory for the slots: the serial loop gives the same result */
         compute_serial(w, dt);
         return;
     }
-    eval_task t = {w, make_ctx(w), out, flag, dt};
+    eval_task t = {w, make_ctx(w), out, sum, flag, dt};
     w->def.parallel_for(w->def.parallel_user, w->pair_n, eval_range, &t);
     pl__parallel_gather(w, out, flag);
     /* the sums over pairs, in pair order as in the serial loop */
@@ -100,12 +108,21 @@ static void compute_threaded(pl_world *w, double dt) {
     for (int k = 0; k < w->pair_n; k++) {
         const uint32_t f = flag[k];
         if (!f) continue;
-        const pl_contact_out *o = &out[k];
+        const pl_contact_sum *o = &sum[k];
         if (f & PL_OUT_POLYKIND) {
-            account_poly(w, &w->pairs[k], o, o->e_elastic, &e_poly);
+            e_poly += o->z;
+            if (f & PL_OUT_EFRIC) w->e_friction += o->y;
+            if (f & PL_OUT_POLY) {
+                w->e_damped += o->x;
+                if (o->ratio > w->worst_overlap_ratio) {
+                    w->worst_overlap_ratio = o->ratio;
+                    w->worst_a = w->pairs[k].a;
+                    w->worst_b = w->pairs[k].b;
+                }
+            }
         } else if (f & PL_OUT_LAW) {
-            c->e_shear += o->es;
-            c->e_normal += o->en;
+            c->e_shear += o->x;
+            c->e_normal += o->y;
             if (o->ratio > c->worst_ratio) {
                 c->worst_ratio = o->ratio;
                 c->worst_a = w->pairs[k].a;
@@ -141,7 +158,7 @@ static void compute_serial(pl_world *w, double dt) {
         case PL_PAIR_POLY_SEGMENT: {
             pl_contact_out o;
             pl__contact_polygon(w, p, pp, dt, &o);
-            if (o.flags) pl__apply(&c, &o, p->a, p->b);
+            if (o.add.flags) pl__apply(&c, &o, p->a, p->b);
             account_poly(w, p, &o, p->touching ? p->elastic : 0, &e_poly);
             break;
         }

@@ -24,20 +24,28 @@ enum {
     PL_OUT_EFRIC = 1024, /* polygon sliding: e_friction set */
     PL_OUT_POLYKIND = 2048 /* a polygon pair (threaded loop): e_elastic set, touching or not */
 };
-typedef struct pl_contact_out {
+typedef struct pl_contact_add { /* what is added to the bodies (the threaded loop's slot) */
     uint32_t flags;
     float pad;
-    double fx, fy, dfx, dfy, sfx, sfy, mr;
-    double tqa, tqb, dma, dmb, sma, smb;
+    double fx, fy, mr, tqa, tqb;               /* enough without the energy tallies */
+    double dfx, dfy, sfx, sfy, dma, dmb, sma, smb; /* the tallies */
+} pl_contact_add;
+typedef struct pl_contact_out {
+    pl_contact_add add;
     double es, en, ratio;     /* disc law: spring energies, overlap / smaller radius */
     double e_damped, e_friction; /* polygons: dissipation of this evaluation */
     double e_elastic;         /* polygons: the pair's stored energy (0 when apart) */
 } pl_contact_out;
+/* The sums over pairs of the threaded loop, kept apart from the slots so that their serial pass
+   reads a dense array: es, en, ratio (discs) or e_damped, e_friction, e_elastic, ratio (polygons). */
+typedef struct pl_contact_sum {
+    double x, y, z, ratio;
+} pl_contact_sum;
 
 /* Adds an evaluation to body b (end 1) or a (end 0), in the order of the original loop. */
 static inline __attribute__((always_inline)) void pl__apply_end(pl_vec2 *restrict force, double *restrict torque,
                                                                  pl_tally *restrict tally, int track,
-                                                                 const pl_contact_out *o, int i, int end) {
+                                                                 const pl_contact_add *o, int i, int end) {
     const uint32_t f = o->flags;
     if (end) {
         if (f & PL_OUT_ROLL) torque[i] += o->mr;

@@ -277,7 +277,7 @@ static double char_length(const pl_world *w, int a, int b, pl_vec2 s, int wall) 
 
 double pl__contact_polygon(const pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt, pl_contact_out *o) {
     geo g;
-    o->flags = 0;
+    o->add.flags = 0;
     if (!contact_geometry(w, p, &g)) {
         untouch(p);
         return 0;
@@ -329,7 +329,7 @@ double pl__contact_polygon(const pl_world *w, pl_pair *p, const pl_pair_params *
         const double lim = smax > 0 ? smax : 0;
         const double slip = kt > 0 ? (fabs(fs) - lim) / kt : fabs(vt) * dt;
         o->e_friction = lim * slip;
-        o->flags |= PL_OUT_EFRIC;
+        o->add.flags |= PL_OUT_EFRIC;
         fs = fs > 0 ? lim : -lim;
         fd = 0;
     } else if (fabs(fs + fd) > smax) {
@@ -362,13 +362,13 @@ double pl__contact_polygon(const pl_world *w, pl_pair *p, const pl_pair_params *
     o->e_damped = fda * (g.area - area_prev) / width + (-fd * vt - mda * wrel) * dt;
 
     const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
-    o->fx = F.x;
-    o->fy = F.y;
+    o->add.fx = F.x;
+    o->add.fy = F.y;
     const pl_vec2 ra = {g.s.x - w->pos[a].x, g.s.y - w->pos[a].y};
     const pl_vec2 rb = {g.s.x - w->pos[b].x, g.s.y - w->pos[b].y};
-    o->tqb = cross2(rb, F) + mda;
-    o->tqa = -(cross2(ra, F) + mda);
-    o->flags |= PL_OUT_F | PL_OUT_TQA | PL_OUT_TQB | PL_OUT_POLY;
+    o->add.tqb = cross2(rb, F) + mda;
+    o->add.tqa = -(cross2(ra, F) + mda);
+    o->add.flags |= PL_OUT_F | PL_OUT_TQA | PL_OUT_TQB | PL_OUT_POLY;
 
     const double rmin = g.wall ? w->radius[w->shape[a] == PL_SHAPE_SEGMENT ? b : a]
                                : mn(w->radius[a], w->radius[b]);

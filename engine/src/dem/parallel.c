@@ -10,9 +10,10 @@
 #include <string.h>
 
 struct pl_par {
-    pl_contact_out *out;
+    pl_contact_add *out; /* per pair: what it adds to its bodies (valid where flag != 0) */
+    pl_contact_sum *sum; /* per pair: its terms of the sums over pairs (valid where flag != 0) */
     uint16_t *flag; /* per pair: the slot's flags (0: nothing to add), dense for the passes */
-    int out_cap, flag_cap;
+    int out_cap, sum_cap, flag_cap;
     int *start;   /* n + 1: body i's pairs are item[start[i] .. start[i+1]) */
     int *item;    /* 2 pair_n: pair index * 2 + end (1: the body is b, 0: a), ascending */
     int start_cap, item_cap;
@@ -29,6 +30,7 @@ void pl_world_set_parallel_for(pl_world *w, pl_parallel_for_fn fn, void *user) {
 void pl__parallel_free(pl_world *w) {
     if (!w->par) return;
     pl_free(w->par->out);
+    pl_free(w->par->sum);
     pl_free(w->par->flag);
     pl_free(w->par->start);
     pl_free(w->par->item);
@@ -46,7 +48,7 @@ static int grow(void **p, int *cap, int need, size_t elem) {
     return 1;
 }
 
-pl_contact_out *pl__parallel_slots(pl_world *w, uint16_t **flag) {
+pl_contact_add *pl__parallel_slots(pl_world *w, uint16_t **flag, pl_contact_sum **sum) {
     if (!w->par) {
         w->par = pl_malloc(sizeof *w->par);
         if (!w->par) return NULL;
@@ -55,9 +57,11 @@ pl_contact_out *pl__parallel_slots(pl_world *w, uint16_t **flag) {
     }
     struct pl_par *q = w->par;
     if (!grow((void **)&q->out, &q->out_cap, w->pair_n, sizeof *q->out) ||
-        !grow((void **)&q->flag, &q->flag_cap, w->pair_n, sizeof *q->flag))
+        !grow((void **)&q->flag, &q->flag_cap, w->pair_n, sizeof *q->flag) ||
+        !grow((void **)&q->sum, &q->sum_cap, w->pair_n, sizeof *q->sum))
         return NULL;
     *flag = q->flag;
+    *sum = q->sum;
     if (q->rebuilds == w->rebuilds && q->n == w->n && q->pair_n == w->pair_n && q->pairs == w->pairs) return q->out;
     /* counting sort of the pair ends by body; filling in pair order keeps each list ascending */
     if (!grow((void **)&q->start, &q->start_cap, w->n + 1, sizeof *q->start) ||
@@ -85,7 +89,7 @@ pl_contact_out *pl__parallel_slots(pl_world *w, uint16_t **flag) {
 
 typedef struct gather_task {
     pl_world *w;
-    const pl_contact_out *out;
+    const pl_contact_add *out;
     const uint16_t *flag;
 } gather_task;
 
@@ -101,7 +105,7 @@ static void gather_range(void *ctx, int begin, int end) {
         }
 }
 
-void pl__parallel_gather(pl_world *w, const pl_contact_out *out, const uint16_t *flag) {
+void pl__parallel_gather(pl_world *w, const pl_contact_add *out, const uint16_t *flag) {
     gather_task t = {w, out, flag};
     w->def.parallel_for(w->def.parallel_user, w->n, gather_range, &t);
 }
