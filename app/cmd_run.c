@@ -19,6 +19,7 @@
 #include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
+#include "thread_pool.h"
 
 static const pl_opt_spec run_specs[] = {
     {"--out", NULL, "DIR", "output folder (default out/<scene-name>/)"},
@@ -39,6 +40,7 @@ static const pl_opt_spec run_specs[] = {
     {"--param", NULL, "NAME=VALUE", "set a parameter the scene declares (repeatable), checked against its range"},
     {"--seed", NULL, "N", "run seed feeding every random helper (default 0: the scene's own seeds)"},
     {"--no-frames", NULL, NULL, "write no frame images (hooks, CSV and the manifest as usual): for sweeps"},
+    {"--threads", NULL, "N", "compute the contacts on N threads (same results as without; default: one, no pool)"},
     {"--skip-done", NULL, NULL, "do nothing when DIR/manifest.json holds a finished run with the same inputs"},
     PL_RESTART_OPTION_ROWS,
     {NULL, NULL, NULL, NULL}};
@@ -237,9 +239,27 @@ static void print_summary(const run_ctx *c, double wall)
            p->frames_from);
 }
 
+static int run_declarative_with(const pl_opts *o, pl_scene *s, pl_world *w, const char *out_dir, pl_manifest *man);
+
 static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir, pl_manifest *man)
 {
     pl_world *w = pl_scene_world(s);
+    int nthreads;
+    if (pl_cli_threads("run", pl_opts_get(o, "--threads"), &nthreads) != 0) return PL_EXIT_FAIL;
+    pl_thread_pool *pool = nthreads ? pl_thread_pool_create(nthreads) : NULL;
+    if (nthreads && !pool) {
+        fprintf(stderr, "porelab run: --threads %d: cannot start the threads\n", nthreads);
+        return PL_EXIT_FAIL;
+    }
+    if (pool) pl_world_set_parallel_for(w, pl_thread_pool_parallel_for, pool);
+    int rc = run_declarative_with(o, s, w, out_dir, man);
+    if (pool) pl_world_set_parallel_for(w, NULL, NULL);
+    pl_thread_pool_destroy(&pool);
+    return rc;
+}
+
+static int run_declarative_with(const pl_opts *o, pl_scene *s, pl_world *w, const char *out_dir, pl_manifest *man)
+{
     pl_render_options ropt;
     if (pl_cli_render_options(o, s, w, &ropt) != 0) return PL_EXIT_FAIL;
     int rc = pl_run_plan_check_view(s, &ropt);
@@ -310,7 +330,7 @@ static int run_declarative(const pl_opts *o, pl_scene *s, const char *out_dir, p
 static int run_imperative(const pl_opts *o, pl_scene *s, pl_manifest *man)
 {
     static const char *const ignored[] = {"--until", "--steps", "--fps", "--every", "--video",
-                                          "--size", "--layers", "--vtk", NULL};
+                                          "--size", "--layers", "--vtk", "--threads", NULL};
     for (int i = 0; ignored[i]; i++)
         if (pl_opts_has(o, ignored[i]))
             fprintf(stderr, "porelab run: note: %s is an imperative script (it returns no "

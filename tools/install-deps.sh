@@ -13,7 +13,9 @@ PKGS=(
   libgmsh-dev liblapack-dev liblapacke-dev
 )
 # ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps.
-OPTIONAL=(ffmpeg xvfb xdotool parallel freefem++)
+# The benchmarks' peers are not installed here (the tests do not need them):
+#   apt-get install liggghts freefem++   (tests/bench/run_liggghts.sh, run_freefem*.sh)
+OPTIONAL=(ffmpeg xvfb xdotool parallel)
 missing=()
 for p in "${PKGS[@]}" "${OPTIONAL[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

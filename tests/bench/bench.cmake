@@ -1,6 +1,8 @@
 # Benchmark programs (built with the project, run by tests/bench/run_all.sh, never by ctest).
-add_executable(bench_dem bench/bench_dem.c)
-target_link_libraries(bench_dem PRIVATE porelab_engine)
+find_package(Threads REQUIRED)
+add_executable(bench_dem bench/bench_dem.c ${CMAKE_SOURCE_DIR}/app/thread_pool.c)
+target_include_directories(bench_dem PRIVATE ${CMAKE_SOURCE_DIR}/app)
+target_link_libraries(bench_dem PRIVATE porelab_engine Threads::Threads)
 add_executable(bench_bonds bench/bench_bonds.c)
 target_link_libraries(bench_bonds PRIVATE porelab_engine)
 # Solid kernels: element-steps per second (tests/bench/bench_solid.c; needs gmsh for the mesh).

@@ -15,12 +15,16 @@ cmake --build "$build" -j2 --target bench_dem >/dev/null
 
 if [ "$what" = all ] || [ "$what" = dem ]; then
   csv=$out/dem.csv
-  echo "label,particles,contacts,steps,cpu_seconds,wall_seconds,particle_steps_per_cpu_s,contacts_per_cpu_s,bytes_per_particle" > "$csv"
-  echo "== grains: porelab (one core) =="
-  "$build/tests/bench_dem" --label discs_5978 --csv "$csv"
+  echo "label,particles,contacts,steps,cpu_seconds,wall_seconds,particle_steps_per_cpu_s,contacts_per_cpu_s,bytes_per_particle,threads,particle_steps_per_wall_s" > "$csv"
+  echo "== grains: porelab (one core, then two threads: same state hash) =="
+  "$build/tests/bench_dem" --label discs_5978 --csv "$csv" --hash
+  "$build/tests/bench_dem" --label discs_5978_threads2 --threads 2 --csv "$csv" --hash
   "$build/tests/bench_dem" --label discs_5978_no_energy --no-energy --csv "$csv"
-  "$build/tests/bench_dem" --label discs_20k --columns 98 --rows 204 --settle 0.8 --settle-dt 2e-5 --settle-damping 30 --steps 5000 --csv "$csv"
-  "$build/tests/bench_dem" --label polygons_5k --polygons --columns 49 --rows 102 --settle 0.3 --settle-dt 2e-5 --steps 2000 --csv "$csv"
+  "$build/tests/bench_dem" --label discs_20k --columns 98 --rows 204 --settle 0.8 --settle-dt 2e-5 --settle-damping 30 --steps 5000 --csv "$csv" --hash
+  "$build/tests/bench_dem" --label discs_20k_threads2 --threads 2 --columns 98 --rows 204 --settle 0.8 --settle-dt 2e-5 --settle-damping 30 --steps 5000 --csv "$csv" --hash
+  "$build/tests/bench_dem" --label discs_200k --columns 1000 --rows 200 --settle 0.3 --settle-dt 5e-5 --settle-damping 30 --steps 1000 --csv "$csv"
+  "$build/tests/bench_dem" --label polygons_5k --polygons --columns 49 --rows 102 --settle 0.3 --settle-dt 2e-5 --steps 2000 --csv "$csv" --hash
+  "$build/tests/bench_dem" --label polygons_5k_threads2 --threads 2 --polygons --columns 49 --rows 102 --settle 0.3 --settle-dt 2e-5 --steps 2000 --csv "$csv" --hash
   echo "== grains: LIGGGHTS (same packing, same core count) =="
   "$here/run_liggghts.sh" 20000 | tee "$out/liggghts.txt"
 fi

@@ -112,6 +112,21 @@ add_test(NAME cli_determinism COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porel
   -DSCENE=${CMAKE_SOURCE_DIR}/scenes/demo.lua -DOUT=${PL_CLI_OUT}/determinism -DSTEPS=300
   -P ${PL_CLI_DIR}/determinism.cmake)
 set_tests_properties(cli_determinism PROPERTIES LABELS cli TIMEOUT 120)
+# Threads: serial, 1, 2 and 8 threads give the same state hash, for discs with walls and polygons
+# (run long enough that bodies carry three or more contacts: summing a body's contacts in
+# another order then changes the hash, checked by reversing the gather order in parallel.c).
+foreach(case demo:1500 figures/polygon_packing:5000)
+  string(REPLACE ":" ";" case ${case})
+  list(GET case 0 scene)
+  list(GET case 1 steps)
+  string(REPLACE "/" "_" tname ${scene})
+  add_test(NAME cli_threads_${tname} COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
+    -DSCENE=${CMAKE_SOURCE_DIR}/scenes/${scene}.lua -DOUT=${PL_CLI_OUT}/threads_${tname} -DSTEPS=${steps}
+    -P ${PL_CLI_DIR}/threads.cmake)
+  set_tests_properties(cli_threads_${tname} PROPERTIES LABELS cli TIMEOUT 240)
+endforeach()
+pl_cli_test(threads_bad RC 1 ARGS run scenes/demo.lua --threads 0 --steps 1 --out ${PL_CLI_OUT}/threads_bad
+  MATCH "--threads must be a whole number of threads in \\[1, 64\\] \\(got '0'\\)")
 
 # Declarative runs: frames as planned, hooks writing CSV, the summary, the hash line.
 pl_cli_test(run_frames_every RC 0

@@ -18,6 +18,12 @@ typedef struct pl_world pl_world;
 /* ------------------------------------------------------------------ world */
 
 /// World parameters. Fill with pl_default_world_def() and override what you need.
+/// Task hook for the contact loop: a parallel-for that runs task(ctx, begin, end) over
+/// sub-ranges covering [0, n) exactly once, possibly on several threads at once, and returns
+/// when all have run. The state is bit-identical with or without it and for any split.
+typedef void (*pl_task_fn)(void *ctx, int begin, int end);
+typedef void (*pl_parallel_for_fn)(void *user, int n, pl_task_fn task, void *ctx);
+
 typedef struct pl_world_def {
     pl_vec2 gravity;       ///< m/s^2; default (0, -9.81). Flag GRAVITY_X / GRAVITY_Y.
     double dt;             ///< time step in s; 0 = automatic (dt_safety x critical step). Default 0.
@@ -33,9 +39,14 @@ typedef struct pl_world_def {
     int guard_interval;    ///< steps between (cheap) stability checks; default 1.
     int track_energy;      ///< 1: exact tallies of dissipated energy (default); 0: skip them for speed
                            ///< (energy() then reports damped and friction as 0 and no balance).
+    pl_parallel_for_fn parallel_for; ///< task hook for the contact loop; NULL (default): serial
+    void *parallel_user;   ///< passed to parallel_for; the world does not own it
 } pl_world_def;
 
 pl_world_def pl_default_world_def(void);
+/// Sets (or with fn = NULL clears) the task hook of an existing world (pl_world_def.parallel_for);
+/// kept across restores of snapshots and state images.
+void pl_world_set_parallel_for(pl_world *w, pl_parallel_for_fn fn, void *user);
 
 /// Creates a world. Returns NULL only when out of memory.
 pl_world *pl_world_create(const pl_world_def *def);

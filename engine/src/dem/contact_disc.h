@@ -21,7 +21,7 @@
  * summed per body. */
 #ifndef PL_CONTACT_DISC_H
 #define PL_CONTACT_DISC_H
-#include "dem/world_internal.h"
+#include "dem/contact_out.h"
 #include <math.h>
 
 /* Body arrays hoisted out of the world once per step (no aliasing reloads in the loop). */
@@ -36,6 +36,23 @@ typedef struct pl_disc_ctx {
     double worst_ratio;
     int worst_a, worst_b;
 } pl_disc_ctx;
+
+static inline __attribute__((always_inline)) void pl__apply(pl_disc_ctx *c, const pl_contact_out *o, int a, int b) {
+    pl__apply_end(c->force, c->torque, c->tally, c->track, &o->add, b, 1);
+    pl__apply_end(c->force, c->torque, c->tally, c->track, &o->add, a, 0);
+}
+
+/* The sums over pairs (spring energies, the worst overlap), in pair order. */
+static inline __attribute__((always_inline)) void pl__account_law(pl_disc_ctx *c, const pl_contact_out *o, int a,
+                                                                   int b) {
+    c->e_shear += o->es;
+    c->e_normal += o->en;
+    if (o->ratio > c->worst_ratio) {
+        c->worst_ratio = o->ratio;
+        c->worst_a = a;
+        c->worst_b = b;
+    }
+}
 
 static inline void pl__untouch(pl_pair *p) {
     if (!p->touching) return; /* most listed pairs stay apart: do not rewrite them */
@@ -58,30 +75,26 @@ static inline double pl__cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y *
    from delta_last to 0, is given as one pull c delta_last / dt along the last normal, instead of
    depending on where in the step the outlines parted. Without it the restitution of a damped
    impact varied with the contact's phase within a step by up to 2 zeta omega dt (-1.55 % at
-   zeta = 0.3, 0.01 x critical). wall: the segment's index or -1. */
-static inline void pl__release(pl_disc_ctx *c, pl_pair *p, double dt, int a, int b, int wall) {
+   zeta = 0.3, 0.01 x critical). wall: the segment's index or -1. The additions go to o. */
+static inline __attribute__((always_inline)) void pl__release(pl_disc_ctx *c, pl_pair *p, double dt, int a, int b,
+                                                               int wall, pl_contact_out *o, int apply) {
+    o->add.flags = 0;
     if (!p->touching) return;
     if (p->cn > 0 && p->overlap > 0) {
         const double fn = -p->cn * p->overlap / dt; /* on b along n: a pull */
         const pl_vec2 n = p->normal;
         const pl_vec2 F = {fn * n.x, fn * n.y};
-        c->force[b].x += F.x;
-        c->force[b].y += F.y;
-        c->force[a].x -= F.x;
-        c->force[a].y -= F.y;
-        double mw = 0;
+        o->add.flags = PL_OUT_F | PL_OUT_FD;
+        o->add.tqa = o->add.tqb = o->add.dma = o->add.dmb = 0;
+        o->add.fx = o->add.dfx = F.x;
+        o->add.fy = o->add.dfy = F.y;
         if (wall >= 0) {
             const pl_vec2 rw = {p->point.x - c->pos[wall].x, p->point.y - c->pos[wall].y};
-            mw = (wall == b ? 1 : -1) * pl__cross2(rw, F);
-            c->torque[wall] += mw;
+            const double mw = (wall == b ? 1 : -1) * pl__cross2(rw, F);
+            if (wall == b) o->add.flags |= PL_OUT_TQB | PL_OUT_DMB, o->add.tqb = o->add.dmb = mw;
+            else o->add.flags |= PL_OUT_TQA | PL_OUT_DMA, o->add.tqa = o->add.dma = mw;
         }
-        if (c->track) {
-            c->tally[b].dfx += F.x;
-            c->tally[b].dfy += F.y;
-            c->tally[a].dfx -= F.x;
-            c->tally[a].dfy -= F.y;
-            if (wall >= 0) c->tally[wall].dm += mw;
-        }
+        if (apply) pl__apply(c, o, a, b);
     }
     pl__untouch(p);
 }
@@ -90,12 +103,15 @@ static inline void pl__release(pl_disc_ctx *c, pl_pair *p, double dt, int a, int
    respect to a's. arm_a, arm_b: distances from the disc centres to the contact point (the
    moment is then -arm F_t). A wall is not centred on the line of the normal force: pass its
    lever vector (contact point - wall centroid) in wall_r and its end (0: a, 1: b) in wall_end,
-   or wall_r = NULL for two discs. wrel = omega_b - omega_a and reff = R of the rolling law. */
+   or wall_r = NULL for two discs. wrel = omega_b - omega_a and reff = R of the rolling law.
+   Updates the pair's history and puts the additions to the bodies in o; with apply, also adds
+   them to bodies a and b and to the sums over pairs at once (the serial loop). */
 static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, pl_pair *p, const pl_pair_params *pp,
                                                                 double dt, int a, int b, pl_vec2 n, double delta,
                                                                 pl_vec2 point, double vn, double vt, double arm_a,
                                                                 double arm_b, double rmin, const pl_vec2 *wall_r,
-                                                                int wall_end, double wrel, double reff) {
+                                                                int wall_end, double wrel, double reff,
+                                                                pl_contact_out *o, int apply) {
     const double fn_el = pp->kn * delta;
     /* onset: the outlines met during the last step; the dashpot sees only the overlap built
        since then, c delta / dt, not the whole step's approach c |v_n| (see pl__release) */
@@ -118,20 +134,16 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
     const double ft = fs + fd;
     double es = 0.5 * fs * fs * pp->inv_ks;
     const double en = 0.5 * fn_el * delta;
-    double mr = 0;
+    uint32_t flags = PL_OUT_F | PL_OUT_FD | PL_OUT_FS | PL_OUT_TQA | PL_OUT_TQB | PL_OUT_DMA | PL_OUT_DMB | PL_OUT_LAW;
     if (pp->rolling > 0) {
         const double kr = pp->ks * reff * reff;
         const double mmax = pp->rolling * reff * (fn_el > 0 ? fn_el : 0);
-        mr = p->mr - kr * wrel * dt;
+        double mr = p->mr - kr * wrel * dt;
         if (fabs(mr) > mmax) mr = mr > 0 ? mmax : -mmax;
         p->mr = mr;
         if (kr > 0) es += 0.5 * mr * mr / kr;
-        c->torque[b] += mr;
-        c->torque[a] -= mr;
-        if (c->track) {
-            c->tally[b].sm += mr;
-            c->tally[a].sm -= mr;
-        }
+        flags |= PL_OUT_ROLL;
+        o->add.mr = mr;
     }
     p->fs = fs;
     p->fn = fn;
@@ -141,66 +153,50 @@ static inline __attribute__((always_inline)) void pl__disc_law(pl_disc_ctx *c, p
     p->point = point;
     p->touching = 1;
     p->elastic = en + es;
-    c->e_shear += es;
-    c->e_normal += en;
+    o->es = es;
+    o->en = en;
     const pl_vec2 t = {-n.y, n.x};
-    const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
-    const pl_vec2 Fd = {fn_d * n.x + fd * t.x, fn_d * n.y + fd * t.y};
-    const pl_vec2 Fs = {fs * t.x, fs * t.y};
-    c->force[b].x += F.x;
-    c->force[b].y += F.y;
-    c->force[a].x -= F.x;
-    c->force[a].y -= F.y;
+    o->add.fx = fn * n.x + ft * t.x;
+    o->add.fy = fn * n.y + ft * t.y;
+    o->add.dfx = fn_d * n.x + fd * t.x;
+    o->add.dfy = fn_d * n.y + fd * t.y;
+    o->add.sfx = fs * t.x;
+    o->add.sfy = fs * t.y;
     if (wall_r) {
         /* moment on the wall from +F (wall b) or -F (wall a) about its centroid */
+        const pl_vec2 F = {o->add.fx, o->add.fy}, Fd = {o->add.dfx, o->add.dfy}, Fs = {o->add.sfx, o->add.sfy};
         const double sgn = wall_end == 1 ? 1 : -1;
-        c->torque[wall_end == 1 ? b : a] += sgn * pl__cross2(*wall_r, F);
-        c->torque[wall_end == 1 ? a : b] -= (wall_end == 1 ? arm_a : arm_b) * ft;
+        const double tw = sgn * pl__cross2(*wall_r, F), tk = -((wall_end == 1 ? arm_a : arm_b) * ft);
+        const double dw = sgn * pl__cross2(*wall_r, Fd), dk = -((wall_end == 1 ? arm_a : arm_b) * fd);
+        const double sw = sgn * pl__cross2(*wall_r, Fs), sk = -((wall_end == 1 ? arm_a : arm_b) * fs);
+        if (wall_end == 1) o->add.tqb = tw, o->add.tqa = tk, o->add.dmb = dw, o->add.dma = dk, o->add.smb = sw, o->add.sma = sk;
+        else o->add.tqa = tw, o->add.tqb = tk, o->add.dma = dw, o->add.dmb = dk, o->add.sma = sw, o->add.smb = sk;
     } else {
-        c->torque[a] -= arm_a * ft;
-        c->torque[b] -= arm_b * ft;
+        o->add.tqa = -(arm_a * ft);
+        o->add.tqb = -(arm_b * ft);
+        o->add.dma = -(arm_a * fd);
+        o->add.dmb = -(arm_b * fd);
+        o->add.sma = -(arm_a * fs);
+        o->add.smb = -(arm_b * fs);
     }
-    if (c->track) {
-        pl_tally *ta = &c->tally[a], *tb = &c->tally[b];
-        tb->dfx += Fd.x;
-        tb->dfy += Fd.y;
-        ta->dfx -= Fd.x;
-        ta->dfy -= Fd.y;
-        tb->sfx += Fs.x;
-        tb->sfy += Fs.y;
-        ta->sfx -= Fs.x;
-        ta->sfy -= Fs.y;
-        if (wall_r) {
-            const double sgn = wall_end == 1 ? 1 : -1;
-            pl_tally *tw = wall_end == 1 ? tb : ta, *tk = wall_end == 1 ? ta : tb;
-            const double arm = wall_end == 1 ? arm_a : arm_b;
-            tw->dm += sgn * pl__cross2(*wall_r, Fd);
-            tw->sm += sgn * pl__cross2(*wall_r, Fs);
-            tk->dm -= arm * fd;
-            tk->sm -= arm * fs;
-        } else {
-            ta->dm -= arm_a * fd;
-            tb->dm -= arm_b * fd;
-            ta->sm -= arm_a * fs;
-            tb->sm -= arm_b * fs;
-        }
-    }
-    const double ratio = delta / rmin;
-    if (ratio > c->worst_ratio) {
-        c->worst_ratio = ratio;
-        c->worst_a = a;
-        c->worst_b = b;
+    o->ratio = delta / rmin;
+    o->add.flags = flags;
+    if (apply) {
+        pl__apply(c, o, a, b);
+        pl__account_law(c, o, a, b);
     }
 }
 
-static inline void pl__contact_disc_disc(pl_disc_ctx *c, pl_pair *p, const pl_pair_params *pp, double dt) {
+static inline __attribute__((always_inline)) void pl__contact_disc_disc(pl_disc_ctx *c, pl_pair *p,
+                                                                        const pl_pair_params *pp, double dt,
+                                                                        pl_contact_out *o, int apply) {
     const int a = p->a, b = p->b;
     const pl_vec2 pa = c->pos[a], pb = c->pos[b];
     const double dx = pb.x - pa.x, dy = pb.y - pa.y;
     const double ra = c->radius[a], rb = c->radius[b], rs = ra + rb;
     const double d2 = dx * dx + dy * dy;
     if (d2 >= rs * rs) {
-        pl__release(c, p, dt, a, b, -1);
+        pl__release(c, p, dt, a, b, -1, o, apply);
         return;
     }
     const double d = sqrt(d2), id = d > 0 ? 1.0 / d : 0;
@@ -215,11 +211,12 @@ static inline void pl__contact_disc_disc(pl_disc_ctx *c, pl_pair *p, const pl_pa
     const pl_vec2 vrel = {vb.x + wb * n.y - va.x + wa * n.y, vb.y - wb * n.x - va.y - wa * n.x};
     const double vn = vrel.x * n.x + vrel.y * n.y, vt = -vrel.x * n.y + vrel.y * n.x;
     pl__disc_law(c, p, pp, dt, a, b, n, delta, point, vn, vt, la, lb, ra < rb ? ra : rb, NULL, 0,
-                 c->omega[b] - c->omega[a], ra * rb / rs);
+                 c->omega[b] - c->omega[a], ra * rb / rs, o, apply);
 }
 
-static inline void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w, pl_pair *p, const pl_pair_params *pp,
-                                            double dt) {
+static inline __attribute__((always_inline)) void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w,
+                                                                           pl_pair *p, const pl_pair_params *pp,
+                                                                           double dt, pl_contact_out *o, int apply) {
     const int s = p->swapped ? p->a : p->b; /* the wall */
     const int k = p->swapped ? p->b : p->a; /* the disc */
     const pl_vec2 *v = &w->verts_world[w->vert_offset[s]];
@@ -231,7 +228,7 @@ static inline void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w, p
     const double dx = P.x - Q.x, dy = P.y - Q.y, d2 = dx * dx + dy * dy;
     const double r = c->radius[k];
     if (d2 >= r * r) {
-        pl__release(c, p, dt, p->a, p->b, s);
+        pl__release(c, p, dt, p->a, p->b, s, o, apply);
         return;
     }
     const double d = sqrt(d2);
@@ -250,11 +247,13 @@ static inline void pl__contact_disc_segment(pl_disc_ctx *c, const pl_world *w, p
         const pl_vec2 nab = {-n.x, -n.y};
         const pl_vec2 vrel = {vw.x - vk.x, vw.y - vk.y};
         const double vn = vrel.x * nab.x + vrel.y * nab.y, vt = -vrel.x * nab.y + vrel.y * nab.x;
-        pl__disc_law(c, p, pp, dt, k, s, nab, delta, point, vn, vt, lk, 0, r, &rw, 1, c->omega[s] - c->omega[k], r);
+        pl__disc_law(c, p, pp, dt, k, s, nab, delta, point, vn, vt, lk, 0, r, &rw, 1, c->omega[s] - c->omega[k], r, o,
+                     apply);
     } else {
         const pl_vec2 vrel = {vk.x - vw.x, vk.y - vw.y};
         const double vn = vrel.x * n.x + vrel.y * n.y, vt = -vrel.x * n.y + vrel.y * n.x;
-        pl__disc_law(c, p, pp, dt, s, k, n, delta, point, vn, vt, 0, lk, r, &rw, 0, c->omega[k] - c->omega[s], r);
+        pl__disc_law(c, p, pp, dt, s, k, n, delta, point, vn, vt, 0, lk, r, &rw, 0, c->omega[k] - c->omega[s], r, o,
+                     apply);
     }
 }
 #endif

@@ -275,8 +275,9 @@ static double char_length(const pl_world *w, int a, int b, pl_vec2 s, int wall) 
     return mx(lc, 0.05 * rmin);
 }
 
-double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt) {
+double pl__contact_polygon(const pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt, pl_contact_out *o) {
     geo g;
+    o->add.flags = 0;
     if (!contact_geometry(w, p, &g)) {
         untouch(p);
         return 0;
@@ -327,7 +328,8 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     if (fabs(fs) > smax) {
         const double lim = smax > 0 ? smax : 0;
         const double slip = kt > 0 ? (fabs(fs) - lim) / kt : fabs(vt) * dt;
-        w->e_friction += lim * slip;
+        o->e_friction = lim * slip;
+        o->add.flags |= PL_OUT_EFRIC;
         fs = fs > 0 ? lim : -lim;
         fd = 0;
     } else if (fabs(fs + fd) > smax) {
@@ -358,25 +360,19 @@ double pl__contact_polygon(pl_world *w, pl_pair *p, const pl_pair_params *pp, do
     }
     p->elastic = e_n + (kt > 0 ? 0.5 * fs * fs / kt : 0);
     /* dissipation = work the dashpots take out of the bodies during this step */
-    w->e_damped += fda * (g.area - area_prev) / width + (-fd * vt - mda * wrel) * dt;
+    o->e_damped = fda * (g.area - area_prev) / width + (-fd * vt - mda * wrel) * dt;
 
     const pl_vec2 F = {fn * n.x + ft * t.x, fn * n.y + ft * t.y};
-    w->force[b].x += F.x;
-    w->force[b].y += F.y;
-    w->force[a].x -= F.x;
-    w->force[a].y -= F.y;
+    o->add.fx = F.x;
+    o->add.fy = F.y;
     const pl_vec2 ra = {g.s.x - w->pos[a].x, g.s.y - w->pos[a].y};
     const pl_vec2 rb = {g.s.x - w->pos[b].x, g.s.y - w->pos[b].y};
-    w->torque[b] += cross2(rb, F) + mda;
-    w->torque[a] -= cross2(ra, F) + mda;
+    o->add.tqb = cross2(rb, F) + mda;
+    o->add.tqa = -(cross2(ra, F) + mda);
+    o->add.flags |= PL_OUT_F | PL_OUT_TQA | PL_OUT_TQB | PL_OUT_POLY;
 
     const double rmin = g.wall ? w->radius[w->shape[a] == PL_SHAPE_SEGMENT ? b : a]
                                : mn(w->radius[a], w->radius[b]);
-    const double ratio = rmin > 0 ? depth / rmin : 0;
-    if (ratio > w->worst_overlap_ratio) {
-        w->worst_overlap_ratio = ratio;
-        w->worst_a = a;
-        w->worst_b = b;
-    }
+    o->ratio = rmin > 0 ? depth / rmin : 0;
     return mx(keff, kt);
 }

@@ -5,6 +5,7 @@ list(APPEND PL_ENGINE_SOURCES
   src/dem/crowding.c
   src/dem/contact_polygon.c
   src/dem/contact_dispatch.c
+  src/dem/parallel.c
   src/dem/integrate.c
   src/dem/servo_drive.c
   src/dem/timestep.c

@@ -129,6 +129,7 @@ struct pl_world {
 
     /* neighbour list */
     pl_pair *pairs, *pairs_scratch;
+    struct pl_par *par;           /* threaded contact loop: slots and body lists (parallel.c) */
     int pair_n, pair_cap, pair_scratch_cap;
     pl_vec2 *pos_at_build;        /* positions when the list was built */
     double *angle_at_build;
@@ -228,6 +229,7 @@ void pl__neighbor_mark_dirty(pl_world *w);
 
 /* Forces (narrow phase). Polygon laws may raise w->worst_overlap_ratio themselves. */
 void pl__compute_contact_forces(pl_world *w, double dt);
+void pl__parallel_free(pl_world *w); /* parallel.c */
 
 /* Integration */
 void pl__integrate(pl_world *w, double dt);

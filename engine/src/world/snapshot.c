@@ -201,6 +201,9 @@ static pl_status restore_grains(pl_world *w, const pl_snapshot *s) {
     w->bond_law_cap = live.bond_law_cap;
     w->thermal_cap = live.thermal_cap;
     w->pairs_scratch = live.pairs_scratch;
+    w->par = live.par; /* the threaded loop's buffers and the task hook stay the live ones */
+    w->def.parallel_for = live.def.parallel_for;
+    w->def.parallel_user = live.def.parallel_user;
     w->pair_scratch_cap = live.pair_scratch_cap;
     w->is_large = live.is_large;
     w->large_list = live.large_list;
@@ -281,6 +284,9 @@ pl_status pl__grains_save(const pl_world *w, pl_image *img) {
     memcpy(&c, w, sizeof c);
     for (int k = 0; k < NSPECS; k++) *field_ptr(&c, &SPECS[k]) = NULL;
     c.pairs_scratch = NULL;
+    c.par = NULL;
+    c.def.parallel_for = NULL;
+    c.def.parallel_user = NULL;
     c.is_large = NULL;
     c.large_list = NULL;
     c.cand = NULL;

@@ -73,6 +73,7 @@ void pl_world_destroy(pl_world **wp) {
     pl_free(w->x0); pl_free(w->tally); pl_free(w->vert_offset); pl_free(w->vert_count);
     pl_free(w->verts_local); pl_free(w->verts_world);
     pl_free(w->pairs); pl_free(w->pairs_scratch);
+    pl__parallel_free(w);
     pl_free(w->pos_at_build); pl_free(w->angle_at_build);
     pl_free(w->temperature); pl_free(w->heat); pl_free(w->wear); pl_free(w->removed_at);
     pl_free(w->temp_hold); pl_free(w->removed); pl_free(w->heat_step); pl_free(w->bonds); pl_free(w->bond_laws); pl_free(w->thermal);

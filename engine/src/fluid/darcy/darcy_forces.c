@@ -206,12 +206,9 @@ void pl_fl_polygon_force(const struct pl_fluid *f, const pl_vec2 *v, int n, pl_v
 static void circle_coeffs(const struct pl_fluid *f, int e, pl_vec2 c, double r, double *al, double *be, double *ga) {
     const double rg = f->par.density * f->par.g;
     *al = p_in(f, e, c);
-    /* grad p = rho g (grad h - up) */
-    const int32_t *v = &f->mesh.tri[3 * e];
-    const double *bc = &f->mesh.bc[6 * e];
-    double inv2A = 1.0 / (2 * f->mesh.area[e]);
-    double gx = (bc[0] * f->head[v[0]] + bc[1] * f->head[v[1]] + bc[2] * f->head[v[2]]) * inv2A;
-    double gy = (bc[3] * f->head[v[0]] + bc[4] * f->head[v[1]] + bc[5] * f->head[v[2]]) * inv2A;
+    /* grad p = rho g (grad h - up), grad h the element's, kept since the last solve
+       (pl_fl_update_gradients: the same expression, so the same bits) */
+    const double gx = f->grad[2 * e], gy = f->grad[2 * e + 1];
     int grav = !(f->par.gravity.x == 0 && f->par.gravity.y == 0);
     *be = r * rg * (gx - (grav ? f->par.up.x : 0));
     *ga = r * rg * (gy - (grav ? f->par.up.y : 0));

@@ -1,0 +1,36 @@
+# Threads do not change results: the same scene run without a task hook (serial contact loop)
+# and with 1, 2 and 8 threads (porelab run --threads N, app/thread_pool.c) gives the same state
+# hash, bit for bit (as Box2D's determinism test compares worker counts); one step more
+# changes it, so a constant hash cannot pass.
+#   cmake -DEXE=porelab -DSCENE=scene.lua -DOUT=dir -DSTEPS=300 -P threads.cmake
+function(run_hash steps threads var)
+  set(extra)
+  if(threads)
+    set(extra --threads ${threads})
+  endif()
+  execute_process(COMMAND ${EXE} run ${SCENE} --steps ${steps} --quiet --hash --every 1000000
+                          --out ${OUT} ${extra}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "run with threads '${threads}' failed (${rc}): ${out}${err}")
+  endif()
+  if(NOT out MATCHES "state-hash: ([0-9a-f]+)\n")
+    message(FATAL_ERROR "no 'state-hash:' line in: ${out}")
+  endif()
+  set(${var} ${CMAKE_MATCH_1} PARENT_SCOPE)
+endfunction()
+run_hash(${STEPS} "" serial)
+foreach(n 1 2 8)
+  run_hash(${STEPS} ${n} h${n})
+endforeach()
+math(EXPR more "${STEPS} + 1")
+run_hash(${more} 2 later)
+message("hashes: serial ${serial}, 1 thread ${h1}, 2 threads ${h2}, 8 threads ${h8} (one step more: ${later})")
+foreach(n 1 2 8)
+  if(NOT h${n} STREQUAL serial)
+    message(FATAL_ERROR "${n} threads gave state hash ${h${n}}, the serial loop ${serial}")
+  endif()
+endforeach()
+if(later STREQUAL serial)
+  message(FATAL_ERROR "the state hash did not change after one more step")
+endif()
