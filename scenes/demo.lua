@@ -1,3 +1,4 @@
+-- Description: Dry grains pour from a hopper into a box and build a heap.
 -- porelab demo: about 330 grains of two sizes rest in a hopper on a closed gate; at
 -- t = 0.6 s the gate slides away and the grains pour into a box, where they build a heap.
 -- Force chains (dark lines, width proportional to the normal contact force) show how the

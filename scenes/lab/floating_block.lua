@@ -1,3 +1,4 @@
+-- Description: The water rises when a block goes in: the level follows the displaced volume.
 -- Classroom lab: the water rises when a block goes in (docs/hydrostatic.md). A narrow tank of
 -- still water; a wooden block is dropped in. The water's amount is fixed (moving level): the
 -- block pushes water aside, so the level rises by the block's submerged area divided by the

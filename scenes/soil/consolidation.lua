@@ -1,3 +1,4 @@
+-- Description: Terzaghi consolidation: loaded grain columns squeeze their pore water out.
 -- Terzaghi consolidation of columns of grains (docs/soil.md §5.2).
 -- NCOL saturated columns of discs side by side (the same recipe, different random packings),
 -- each in its own box under its own rigid piston, drained at the bottom only (a porous stone

@@ -1,3 +1,4 @@
+-- Description: Simple shear of small grain samples, dry and saturated, steady and cyclic.
 -- Constant-volume simple shear of the 20-disc samples of seed 003 (Tan 1990, §5.4-5.6,
 -- Table 5.1), dry and saturated, monotonic and cyclic (docs/soil.md §5.4).
 --
