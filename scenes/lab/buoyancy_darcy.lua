@@ -54,7 +54,8 @@ return {
   params = params,
   run = { t_end = 4.0, fps = 30 },
   render = { size = { 800, 600 }, camera = { -0.03, -0.02, W + 0.03, 0.44 },
-             layers = "bodies,pressure,isolines,colorbar,title,time",
+             layers = "bodies,pressure,isolines,colorbar,scalebar,title,time",
+             colors = { wood = "#b5834a", ice = "#d8eef7", brick = "#a8442c", pebble = "#8c8c8c", tank = "#555555" },
              title = "What floats? wood, ice, brick in water",
              -- the window's live chart (porelab view: "charts"): how high each block sits
              live = { { title = "height above the tank floor (cm)", range = { 0, 42 },
