@@ -434,8 +434,13 @@ local function overlay(world)
   local items = {}
   for _, row in ipairs(rows) do
     local b0 = row.box.servo
-    local label = row.kind == "monotonic" and "monotonic shear" or string.format("cyclic shear, \u{00B1}%.1f %%", 100 * GAMMA_CYC)
-    items[#items + 1] = { text = label, at = { 0.9995, row.oy + 15.5 * mm }, size = 16 }
+    if row.kind == "monotonic" then
+      items[#items + 1] = { text = "monotonic shear", at = { 0.9995, row.oy + 15.5 * mm }, size = 16 }
+    else -- two short lines, clear of the upper row's box names and of this row's walls
+      items[#items + 1] = { text = "cyclic", at = { 0.9995, row.oy + 15.3 * mm }, size = 16 }
+      items[#items + 1] = { text = string.format("\u{00B1}%.1f %%", 100 * GAMMA_CYC), at = { 0.9995, row.oy + 14.0 * mm },
+                            size = 16 }
+    end
     for _, col in ipairs(COLS) do
       local b = row.box[col]
       local name = ({ servo = "dry, servo (drained)", cv = "dry, constant volume", und = "saturated, undrained" })[col]

@@ -33,12 +33,13 @@ cleanup() {
 trap cleanup EXIT
 fail() { echo "FAIL: $*"; echo "--- window log:"; cat "$OUT/view.log" 2>/dev/null; exit 1; }
 
-n=91
-while [ -e /tmp/.X11-unix/X$n ] || [ -e /tmp/.X$n-lock ]; do n=$((n + 1)); done
-Xvfb :$n -screen 0 1024x768x24 -nolisten tcp >"$OUT/xvfb.log" 2>&1 &
+# Xvfb picks a free display itself (-displayfd: no race with other test runs on the machine)
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$OUT/xvfb.display" >"$OUT/xvfb.log" 2>&1 &
 XPID=$!
+i=0; while [ ! -s "$OUT/xvfb.display" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+n=$(head -1 "$OUT/xvfb.display")
+[ -n "$n" ] || { echo "FAIL: Xvfb did not start"; exit 1; }
 export DISPLAY=:$n
-i=0; while [ ! -e /tmp/.X11-unix/X$n ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 
 cp "$SRC/scenes/lab/buoyancy_darcy.lua" "$OUT/scene.lua"
 "$P" view "$OUT/scene.lua" --paused --size 640x480 --out "$OUT/v" >"$OUT/view.log" 2>&1 &
