@@ -42,10 +42,10 @@ figures/polygon_packing 1.5
 mimes/buoyancy 150
 mimes/dam_flow 0.5
 mimes/prop 20
-navier_stokes/cavity 10.0
-navier_stokes/cylinder_channel 8.0
-navier_stokes/settling_disc 0.4
-stokes/falling_disc 0.05
+navier_stokes/cavity 3.0
+navier_stokes/cylinder_channel 2.0
+navier_stokes/settling_disc 0.2
+stokes/falling_disc 0.02
 "
 echo "$LIST" | while read -r name t; do
   [ -n "$name" ] || continue
