@@ -46,6 +46,8 @@ cp "$SRC/scenes/lab/buoyancy_darcy.lua" "$OUT/scene.lua"
 VPID=$!
 W=$(timeout 20 xdotool search --sync --name "porelab - $OUT/scene.lua" | head -1)
 [ -n "$W" ] || fail "the window did not appear"
+# the start line follows the window's creation (GL set up): wait for it
+i=0; while ! grep -q "porelab view" "$OUT/view.log" && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
 grep -q "porelab view" "$OUT/view.log" || fail "no start line"
 
 # waits until the log has N screenshot lines; prints the last one's time
