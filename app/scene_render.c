@@ -17,7 +17,7 @@ static const char *const render_fields[] = {
     "size", "camera", "margin", "layers", "background", "colors", "wall_color",
     "force_color", "force_scale", "force_threshold", "force_max_width", "color_by", "title",
     "color_range", "fluid_field", "fluid_range", "isolines", "velocity_scale", "time_offset",
-    "overlay", "excess_reference", "record_from", "hide", NULL};
+    "overlay", "excess_reference", "record_from", "hide", "live", NULL};
 
 static int hex_digit(char c)
 {

@@ -1,3 +1,4 @@
+-- Description: Dry grains pour from a hopper into a box and build a heap.
 -- porelab demo: about 330 grains of two sizes rest in a hopper on a closed gate; at
 -- t = 0.6 s the gate slides away and the grains pour into a box, where they build a heap.
 -- Force chains (dark lines, width proportional to the normal contact force) show how the
@@ -45,9 +46,10 @@ return {
     size = { 640, 960 },
     camera = { 0.1, -0.03, 1.1, 1.47 },    -- m; the gate slides out of view
     colors = { small = "#f2cf6b", large = "#9dbbdc", steel = "#3a3a3a" },
-    force_color = "#8b1a1a",
-    force_scale = 150,       -- N drawn at the full width (about a bottom contact's load)
-    force_max_width = 7,     -- pixels
+    force_color = "#7a1010",
+    force_scale = 200,       -- N drawn at the full width (the heavier contacts near the floor)
+    force_max_width = 4.5,   -- pixels: thinner than a small grain, so the chains do not hide it
+    force_threshold = 0.02,  -- contacts under 4 N are not drawn
     layers = { "bodies", "forces", "time", "title" },
     title = "Grains through a hopper: force chains",
   },

@@ -59,7 +59,9 @@ if(PL_HAVE_WINDOW)
   list(APPEND PL_GL_APP_SOURCES
     ${_pl_win_dir}/window.c
     ${_pl_win_dir}/window_hud.c
-    ${_pl_win_dir}/window_sim.c)
+    ${_pl_win_dir}/window_sim.c
+    ${_pl_win_dir}/window_live.c
+    ${_pl_win_dir}/window_picker.c)
   list(APPEND PL_GL_APP_LIBS PkgConfig::SDL2)
   message(STATUS "porelab window: SDL2 ${SDL2_VERSION} (porelab view SCENE.lua)")
 else()

@@ -1,5 +1,7 @@
-/* XY charts with PLplot drawing onto our own cairo surface (extcairo device). PLplot keeps
- * global state, so charts are made one at a time under a mutex, each in its own stream. */
+/* XY charts with PLplot: PNG and PDF drawn onto our own cairo surface (extcairo device);
+ * SVG by PLplot's own svg device, which writes the text as <text> elements (cairo 1.16's SVG
+ * surface only writes glyph outlines). PLplot keeps global state, so charts are made one at
+ * a time under a mutex, each in its own stream. */
 #define _POSIX_C_SOURCE 200809L
 #include "charts.h"
 
@@ -109,11 +111,17 @@ static int axis_range(const pl_chart_def *d, int axis, double *lo, double *hi, c
     return 0;
 }
 
-static void draw_chart(const pl_chart_def *d, cairo_t *cr, double xlo, double xhi, double ylo,
-                       double yhi) {
+/* cr: draw onto this cairo context (extcairo); else svg_path: PLplot's svg device writes it */
+static void draw_chart(const pl_chart_def *d, cairo_t *cr, const char *svg_path, double xlo,
+                       double xhi, double ylo, double yhi) {
     PLINT strm;
     plmkstrm(&strm);
-    plsdev("extcairo");
+    if (cr) {
+        plsdev("extcairo");
+    } else {
+        plsdev("svg");
+        plsfnam(svg_path);
+    }
     plspage(72.0, 72.0, d->width, d->height, 0, 0);
     plscol0(COL_BG, 255, 255, 255);
     plscol0(COL_INK, 34, 34, 38);
@@ -134,7 +142,7 @@ static void draw_chart(const pl_chart_def *d, cairo_t *cr, double xlo, double xh
         plscol0(COL_SERIES + s, r, g, b);
     }
     plinit();
-    pl_cmd(PLESC_DEVINIT, cr);
+    if (cr) pl_cmd(PLESC_DEVINIT, cr);
     pladv(0);
     /* character height scales with the chart: about 1/40 of its smaller side */
     double side_mm = (d->width < d->height ? d->width : d->height) * 25.4 / 72.0;
@@ -251,6 +259,20 @@ int pl_chart_write(const char *path, const pl_chart_def *def, char *err, size_t 
     pl_atomic_file af;
     af.tmp_path[0] = '\0';
     if (fmt != 0 && pl_atomic_file_begin(&af, path, err, errlen)) return -1;
+    if (fmt == 1) { /* PLplot's svg device: real text */
+        pthread_mutex_lock(&chart_lock);
+        draw_chart(def, NULL, af.tmp_path, xlo, xhi, ylo, yhi);
+        pthread_mutex_unlock(&chart_lock);
+        FILE *f = fopen(af.tmp_path, "rb");
+        long n = -1;
+        if (f) {
+            fseek(f, 0, SEEK_END);
+            n = ftell(f);
+            fclose(f);
+        }
+        if (n <= 0) snprintf(err, errlen, "cannot write %s: PLplot's svg device wrote nothing", path);
+        return pl_atomic_file_end(&af, n > 0, err, errlen) != 0 || n <= 0 ? -1 : 0;
+    }
     if (fmt == 0) surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
     else if (fmt == 1) surf = cairo_svg_surface_create(af.tmp_path, W, H);
     else surf = cairo_pdf_surface_create(af.tmp_path, W, H);
@@ -269,7 +291,7 @@ int pl_chart_write(const char *path, const pl_chart_def *def, char *err, size_t 
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     pthread_mutex_lock(&chart_lock);
-    draw_chart(def, cr, xlo, xhi, ylo, yhi);
+    draw_chart(def, cr, NULL, xlo, xhi, ylo, yhi);
     pthread_mutex_unlock(&chart_lock);
     int rc = 0;
     if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {

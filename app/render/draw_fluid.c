@@ -157,11 +157,13 @@ int pl_render_scene_capture_fluid(pl_render_scene *s, const pl_world *w, int fie
     return 0;
 }
 
-/* Below these magnitudes a node value is round-off, drawn as zero (Pa fields and m fields),
- * and an automatic range never spans less than the floors (a field of 1e-11 Pa is not drawn
- * as full scale). */
+/* Below max(absolute floor, PL_FLUID_NOISE_REL x the field's span) a node value is round-off,
+ * drawn as zero (Pa fields and m fields; the span is max(v, 0) - min(v, 0) over the nodes, so a
+ * 10 MPa field drops values under 10 Pa, a 100 Pa field those under 0.01 Pa), and an automatic
+ * range never spans less than the floors (a field of 1e-11 Pa is not drawn as full scale). */
 #define PL_FLUID_NOISE_PA 1e-2
 #define PL_FLUID_NOISE_M 1e-6
+#define PL_FLUID_NOISE_REL 1e-6
 #define PL_FLUID_FLOOR_PA 1.0
 #define PL_FLUID_FLOOR_M 1e-4
 
@@ -171,7 +173,14 @@ static int field_is_pa(int field) {
 }
 
 void pl_render_scene_denoise_fluid(pl_render_scene *s) {
-    double noise = field_is_pa(s->fluid_field) ? PL_FLUID_NOISE_PA : PL_FLUID_NOISE_M;
+    double lo = 0.0, hi = 0.0;
+    for (int i = 0; i < s->fluid_node_count; i++)
+        if (isfinite(s->fluid_values[i])) {
+            lo = fmin(lo, s->fluid_values[i]);
+            hi = fmax(hi, s->fluid_values[i]);
+        }
+    double noise = fmax(field_is_pa(s->fluid_field) ? PL_FLUID_NOISE_PA : PL_FLUID_NOISE_M,
+                        PL_FLUID_NOISE_REL * (hi - lo));
     for (int i = 0; i < s->fluid_node_count; i++)
         if (fabs(s->fluid_values[i]) < noise) s->fluid_values[i] = 0.0;
 }

@@ -14,6 +14,7 @@
 #include "render/draw_world.h"
 #include "scene_overlay.h"
 #include "window_hud.h"
+#include "window_picker.h"
 #include "window_sim.h"
 
 typedef struct win {
@@ -35,10 +36,17 @@ typedef struct win {
     /* the control panel at the right edge (outside the scene's area), while the HUD shows */
     int panel_w;
     int nhit;
-    struct { pl_px_rect r; int kind, index; } hit[48]; /* clickable controls of the last frame */
+    struct { pl_px_rect r; int kind, index; } hit[64]; /* clickable controls of the last frame */
+    int picking, pick_first; /* the scene picker shows (from entry pick_first) */
+    int show_charts;         /* the live charts show (when the scene declares any) */
+    int hits_printed;        /* PORELAB_WINDOW_DEBUG: the controls' boxes were printed */
+    pl_picker picker;
 } win;
 
-enum { HIT_PLAY = 0, HIT_STEP, HIT_RESTART, HIT_REWIND, HIT_LAYER, HIT_SLIDER };
+enum { HIT_PLAY = 0, HIT_STEP, HIT_RESTART, HIT_REWIND, HIT_LAYER, HIT_SLIDER, HIT_SCENES, HIT_CHARTS,
+       HIT_PICK, HIT_PICK_MORE, HIT_PICK_BACK };
+static const char *const hit_names[] = {"play", "step", "restart", "rewind", "layer", "slider", "scenes",
+                                        "charts", "pick", "more", "back"};
 static const unsigned panel_layers[] = {PL_LAYER_BODIES, PL_LAYER_FORCES, PL_LAYER_PRESSURE,
                                         PL_LAYER_ISOLINES, PL_LAYER_VELOCITY, PL_LAYER_OVERLAY};
 static const char *const panel_layer_names[] = {"grains and bodies", "force chains", "pressure",
@@ -258,7 +266,7 @@ static void panel_heading(panel_ctx *c, const char *text)
     panel_text(c, text, c->fs, pl_rgb(0.65, 0.78, 1.0));
 }
 
-static void panel_button(panel_ctx *c, double x, double w, const char *label, int kind, int on)
+static void panel_button_i(panel_ctx *c, double x, double w, const char *label, int kind, int index, int on)
 {
     pl_px_rect r = {x, c->y, x + w, c->y + 1.7 * c->fs};
     pl_vec2 box[4] = {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
@@ -267,7 +275,102 @@ static void panel_button(panel_ctx *c, double x, double w, const char *label, in
     pl_dl_polygon(c->h, PL_SPACE_PIXEL, box, 4, &st);
     pl_dl_text(c->h, PL_SPACE_PIXEL, (pl_vec2){0.5 * (r.x0 + r.x1), 0.5 * (r.y0 + r.y1)}, label,
                c->fs, PL_ANCHOR_CENTER | PL_ANCHOR_MIDDLE, 0.0f, c->ink, NULL);
-    add_hit(c->g, r, kind, 0);
+    add_hit(c->g, r, kind, index);
+}
+
+static void panel_button(panel_ctx *c, double x, double w, const char *label, int kind, int on)
+{
+    panel_button_i(c, x, w, label, kind, 0, on);
+}
+
+/* Text cut to the panel's width (with an ellipsis); returns the bytes used of s. */
+static size_t fit_text(win *g, const char *s, double width, float size, char *out, size_t n)
+{
+    size_t len = strlen(s), best = len;
+    if (measure(g->gl, s, size) > width) {
+        /* the longest prefix ending at a space that fits (with "…") */
+        best = 0;
+        for (size_t k = 1; k < len && k < n - 4; k++)
+            if (s[k] == ' ') {
+                char t[512];
+                snprintf(t, sizeof t, "%.*s…", (int)k, s);
+                if (measure(g->gl, t, size) <= width) best = k;
+                else break;
+            }
+        if (best == 0) best = len < 20 ? len : 20;
+    }
+    snprintf(out, n, "%.*s", (int)best, s);
+    return best;
+}
+
+/* The scene picker: the shipped scenes, two lines each (name, description), in pages. */
+static void build_picker(win *g, panel_ctx *c, double H)
+{
+    char l[512];
+    panel_heading(c, "choose a scene (click one)");
+    if (g->picker.n == 0) {
+        panel_text(c, "no scenes folder found", c->fs, c->ink);
+        panel_text(c, "(set PORELAB_SCENES)", 11.0f, c->ink);
+    }
+    double bw = (c->x1 - c->x0 - 6.0) / 2.0;
+    double bottom = H - 1.7 * c->fs - 12.0;
+    int k = g->pick_first;
+    if (k >= g->picker.n) k = g->pick_first = 0;
+    for (; k < g->picker.n && c->y + 2.6 * c->fs < bottom; k++) {
+        const pl_picker_entry *e = &g->picker.e[k];
+        int current = strcmp(e->path, g->sim.path) == 0;
+        double y0 = c->y;
+        panel_text(c, e->name, c->fs, current ? pl_rgb(1.0, 0.85, 0.45) : c->ink);
+        /* the description on up to two lines */
+        const char *d = e->desc;
+        for (int line = 0; line < 2 && *d; line++) {
+            size_t used = fit_text(g, d, c->x1 - c->x0 - 8.0, 10.5f, l, sizeof l);
+            if (line == 1 && used < strlen(d)) strncat(l, "…", sizeof l - strlen(l) - 1);
+            double save = c->x0;
+            c->x0 += 8.0;
+            panel_text(c, l, 10.5f, pl_rgb(0.75, 0.75, 0.72));
+            c->x0 = save;
+            d += used;
+            while (*d == ' ') d++;
+        }
+        add_hit(g, (pl_px_rect){c->x0 - 4, y0, c->x1, c->y}, HIT_PICK, k);
+        c->y += 3.0;
+    }
+    c->y = bottom;
+    panel_button(c, c->x0, bw, "back", HIT_PICK_BACK, 0);
+    if (g->picker.n > 0) panel_button(c, c->x0 + bw + 6.0, bw, k < g->picker.n ? "more" : "first page", HIT_PICK_MORE, 0);
+    if (g->picker.n > 0) g->hit[g->nhit - 1].index = k < g->picker.n ? k : 0;
+}
+
+/* The live charts from c->y down to H (each at most 190 px high; none below 90 px each
+ * unless `all`, the charts view, which gives them the whole rest). */
+static void draw_charts(win *g, panel_ctx *c, double H, int all)
+{
+    const pl_live *lv = &g->sim.live;
+    if (lv->ncharts <= 0) return;
+    double room = H - c->y - 8.0, ch = room / lv->ncharts;
+    if (ch > 190.0 && !all) ch = 190.0;
+    if (ch > 260.0) ch = 260.0;
+    if (ch < (all ? 60.0 : 90.0)) return;
+    double y0 = all ? c->y + 6.0 : H - lv->ncharts * ch;
+    for (int k = 0; k < lv->ncharts; k++)
+        pl_live_draw(lv, k, c->h, c->x0, y0 + k * ch + 4.0, c->x1, y0 + (k + 1) * ch - 6.0, measure, g->gl);
+    c->y = y0 + lv->ncharts * ch;
+}
+
+/* PORELAB_WINDOW_DEBUG: the controls' boxes once per layout change, for tests that click. */
+static void print_hits(win *g)
+{
+    if (!getenv("PORELAB_WINDOW_DEBUG")) return;
+    int sig = g->nhit * 131 + g->picking * 7 + g->pick_first * 1009 + g->show_charts;
+    if (g->hits_printed == sig + 1) return;
+    g->hits_printed = sig + 1;
+    for (int i = 0; i < g->nhit; i++)
+        printf("control: %s %d %.0f %.0f %.0f %.0f%s%s\n", hit_names[g->hit[i].kind], g->hit[i].index,
+               g->hit[i].r.x0, g->hit[i].r.y0, g->hit[i].r.x1, g->hit[i].r.y1, g->hit[i].kind == HIT_PICK ? " " : "",
+               g->hit[i].kind == HIT_PICK ? g->picker.e[g->hit[i].index].name : "");
+    printf("controls: %d\n", g->nhit);
+    fflush(stdout);
 }
 
 static void build_hud(win *g)
@@ -300,10 +403,19 @@ static void build_hud(win *g)
     c.y += 1.7 * fs + 5.0;
     panel_button(&c, c.x0, bw, "restart", HIT_RESTART, 0);
     panel_button(&c, c.x0 + bw + 6.0, bw, "rewind", HIT_REWIND, 0);
+    c.y += 1.7 * fs + 5.0;
+    panel_button(&c, c.x0, bw, "scenes", HIT_SCENES, g->picking);
+    panel_button(&c, c.x0 + bw + 6.0, bw, "charts", HIT_CHARTS, g->show_charts && g->sim.live.ncharts > 0);
     c.y += 1.7 * fs + 6.0;
-    snprintf(l, sizeof l, "t = %.3f s   %s   colour: %s", pl_world_time(w),
+    if (g->picking) {
+        build_picker(g, &c, H);
+        print_hits(g);
+        return;
+    }
+    snprintf(l, sizeof l, "t = %.3f s   %s%s%s", pl_world_time(w),
              g->sim.stopped ? "stopped" : g->playing ? "playing" : "paused",
-             coloring_name(g->sim.ropt.coloring));
+             g->sim.ropt.coloring == PL_COLOR_BY_MATERIAL ? "" : "   by ",
+             g->sim.ropt.coloring == PL_COLOR_BY_MATERIAL ? "" : coloring_name(g->sim.ropt.coloring));
     panel_text(&c, l, fs, ink);
 
     if (g->show_help) {
@@ -321,6 +433,13 @@ static void build_hud(win *g)
                 p += len;
             }
         }
+        return;
+    }
+
+    const pl_live *lv = &g->sim.live;
+    if (g->show_charts && lv->ncharts > 0) { /* the charts instead of the controls below */
+        draw_charts(g, &c, H, 1);
+        print_hits(g);
         return;
     }
 
@@ -450,7 +569,8 @@ static void build_hud(win *g)
             panel_text(&c, l, 11.0f, k ? pl_rgb_hex(0xFF8080) : pl_rgb(1.0, 0.85, 0.45));
         }
     }
-    (void)measure;
+    draw_charts(g, &c, H, 0); /* in the room left, if there is enough */
+    print_hits(g);
 }
 
 static void screenshot(win *g)
@@ -637,6 +757,41 @@ static void to_px(win *g, int x, int y, int *px, int *py)
     *py = wh > 0 ? (int)((long)y * dh / wh) : y;
 }
 
+/* Opens another scene (the picker): on failure the current one stays, with the message. */
+static void open_scene(win *g, const char *path)
+{
+    char old[PATH_MAX];
+    snprintf(old, sizeof old, "%s", g->sim.path);
+    snprintf(g->sim.path, sizeof g->sim.path, "%s", path);
+    /* a fresh view for the new scene: its own size-independent camera and layers */
+    pl_render_options keep = g->sim.ropt;
+    if (pl_wsim_load(&g->sim, 0) != 0) {
+        snprintf(g->sim.path, sizeof g->sim.path, "%s", old);
+        printf("open: failed, the previous scene stays: %s\n", g->sim.error);
+        fflush(stdout);
+        return;
+    }
+    g->sim.ropt.layers = g->sim.scene_layers;
+    g->sim.ropt.coloring = (pl_body_coloring)g->sim.scene_coloring;
+    g->sim.ropt.fluid_field = g->sim.scene_fluid_field;
+    g->sim.ropt.auto_camera = g->sim.scene_auto_camera;
+    g->sim.ropt.view_lo = g->sim.scene_view_lo;
+    g->sim.ropt.view_hi = g->sim.scene_view_hi;
+    g->sim.ropt.color_min = g->sim.ropt.color_max = 0;
+    g->sim.ropt.width = keep.width;
+    g->sim.ropt.height = keep.height;
+    g->picking = 0;
+    g->grab = -1;
+    g->param_sel = 0;
+    g->show_charts = g->sim.live.ncharts > 0;
+    char title[PATH_MAX + 32];
+    snprintf(title, sizeof title, "porelab - %.*s", PATH_MAX, g->sim.path);
+    SDL_SetWindowTitle(g->sdl, title);
+    message(g, "opened the scene", 0);
+    printf("open: %s\n", g->sim.path);
+    fflush(stdout);
+}
+
 /* A click on the control panel; 1 when it hit a control (or the panel). */
 static int panel_click(win *g, int x, int y, int drag)
 {
@@ -650,6 +805,17 @@ static int panel_click(win *g, int x, int y, int drag)
         case HIT_STEP: key(g, SDLK_s, 0); break;
         case HIT_RESTART: key(g, SDLK_r, 0); break;
         case HIT_REWIND: key(g, SDLK_LEFT, 0); break;
+        case HIT_SCENES:
+            g->picking = !g->picking;
+            if (g->picking) pl_picker_scan(&g->picker, g->sim.path);
+            break;
+        case HIT_CHARTS:
+            g->show_charts = !g->show_charts;
+            if (g->sim.live.ncharts == 0) message(g, "this scene records no live charts", 0);
+            break;
+        case HIT_PICK_BACK: g->picking = 0; break;
+        case HIT_PICK_MORE: g->pick_first = g->hit[i].index; break;
+        case HIT_PICK: open_scene(g, g->picker.e[g->hit[i].index].path); break;
         case HIT_LAYER: {
             int k = g->hit[i].index;
             toggle_layer(g, panel_layers[k], panel_layer_names[k]);
@@ -758,6 +924,7 @@ int pl_window_main(const pl_opts *o)
     win *g = &G;
     memset(g, 0, sizeof *g);
     g->sim.o = o;
+    snprintf(g->sim.path, sizeof g->sim.path, "%s", o->positional[0]);
     if (pl_opts_has(o, "--out"))
         snprintf(g->sim.out_dir, sizeof g->sim.out_dir, "%s", pl_opts_get(o, "--out"));
     else
@@ -783,6 +950,7 @@ int pl_window_main(const pl_opts *o)
     if (sp > 0) g->speed = sp;
     g->playing = !pl_opts_has(o, "--paused");
     g->show_hud = 1;
+    g->show_charts = 0; /* the controls first; the charts button shows the live charts */
     g->grab = g->hover = -1;
 
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
@@ -805,7 +973,7 @@ int pl_window_main(const pl_opts *o)
         }
     }
     char title[PATH_MAX + 32];
-    snprintf(title, sizeof title, "porelab - %s", o->positional[0]);
+    snprintf(title, sizeof title, "porelab - %.*s", PATH_MAX, g->sim.path);
     g->sdl = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                               g->sim.ropt.width, g->sim.ropt.height,
                               SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE);

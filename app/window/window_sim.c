@@ -19,7 +19,7 @@ static void get_mtime(const char *path, struct timespec *t)
 int pl_wsim_file_changed(pl_wsim *sim)
 {
     struct timespec t;
-    get_mtime(sim->o->positional[0], &t);
+    get_mtime(sim->path, &t);
     return t.tv_sec != sim->mtime.tv_sec || t.tv_nsec != sim->mtime.tv_nsec;
 }
 
@@ -129,7 +129,7 @@ static int log_event(pl_wsim *sim, pl_wevent e)
 /* Loads the scene into fresh state; on success replaces the current one. */
 static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
 {
-    pl_scene_options so = {sim->o->positional[0], sim->out_dir, pl_opts_has(sim->o, "--trust"), 0, 0, NULL, NULL};
+    pl_scene_options so = {sim->path, sim->out_dir, pl_opts_has(sim->o, "--trust"), 0, 0, NULL, NULL};
     pl_scene *s = pl_scene_create(&so);
     if (!s) {
         snprintf(sim->error, sizeof sim->error, "out of memory while creating the Lua state");
@@ -142,7 +142,7 @@ static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
         return -1;
     }
     struct timespec mt;
-    get_mtime(sim->o->positional[0], &mt);
+    get_mtime(sim->path, &mt);
     pl_scene_register_chart(s);
     if (pl_scene_load(s) != 0) {
         snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(s));
@@ -193,12 +193,25 @@ static int load_fresh(pl_wsim *sim, const pl_render_options *keep_view)
         params[i].max = sp[i].max;
         params[i].step = sp[i].step;
     }
+    pl_live lv;
+    memset(&lv, 0, sizeof lv);
+    if (pl_live_declare(&lv, s, (double)plan.total_steps * plan.dt) < 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(s));
+        pl_scene_destroy(&s);
+        sim->mtime = mt;
+        return -1;
+    }
+    pl_live_free(&sim->live);
+    sim->live = lv;
     if (sim->s) pl_scene_destroy(&sim->s);
     sim->s = s;
     sim->w = w;
     sim->scene_auto_camera = ropt.auto_camera;
     sim->scene_view_lo = ropt.view_lo;
     sim->scene_view_hi = ropt.view_hi;
+    sim->scene_layers = ropt.layers;
+    sim->scene_coloring = (int)ropt.coloring;
+    sim->scene_fluid_field = (int)ropt.fluid_field;
     if (keep_view) { /* window size, layers, colouring, camera survive reloads */
         ropt.width = keep_view->width;
         ropt.height = keep_view->height;
@@ -250,6 +263,7 @@ void pl_wsim_free(pl_wsim *sim)
 {
     free_snaps(sim);
     pl_scene_destroy(&sim->s);
+    pl_live_free(&sim->live);
     pl_draw_list_free(&sim->overlay);
     free(sim->log);
     sim->log = NULL;
@@ -266,6 +280,11 @@ static int hook_frame(pl_wsim *sim)
         return -1;
     }
     sim->next_k++;
+    /* the live charts read what the hook (or the step) left */
+    if (pl_live_sample(&sim->live, sim->s, pl_world_time(sim->w)) != 0) {
+        snprintf(sim->error, sizeof sim->error, "%s", pl_scene_error(sim->s));
+        pl_live_free(&sim->live); /* the chart is dropped; the scene runs on */
+    }
     return 0;
 }
 
@@ -336,6 +355,7 @@ int pl_wsim_rewind(pl_wsim *sim, long long step)
         sim->stopped = 0;
         sim->error[0] = 0;
         sim->last_rewind_from = z->step;
+        pl_live_truncate(&sim->live, pl_world_time(sim->w));
         int rc = pl_wsim_advance(sim, step - z->step);
         if (rc == 0) rc = apply_pending(sim);
         return rc;

@@ -20,6 +20,7 @@
 #include "scene.h"
 #include "run_plan.h"
 #include "render/drawlist.h"
+#include "window_live.h"
 
 #define PL_WSIM_MAX_PARAMS PL_SCENE_MAX_PARAMS
 
@@ -47,11 +48,15 @@ typedef struct pl_wsnap {
 
 typedef struct pl_wsim {
     const pl_opts *o;
+    char path[PATH_MAX];            /* the open scene (the picker changes it) */
+    pl_live live;                   /* the scene's live charts (render.live), sampled per frame */
     char out_dir[PATH_MAX];
     pl_scene *s;
     pl_world *w;
     pl_render_options ropt;
     int scene_auto_camera;          /* the scene's own camera, restored by 'z' */
+    unsigned scene_layers;          /* the scene's own layers, colouring and field (a new scene) */
+    int scene_coloring, scene_fluid_field;
     pl_vec2 scene_view_lo, scene_view_hi;
     pl_run_plan plan;
     pl_draw_list overlay;

@@ -1,3 +1,4 @@
+-- Description: What floats? Wood, ice and brick in still water, with their weight and buoyancy.
 -- Classroom lab: what floats? (docs/classroom.md, lesson 1). A tank of still water with
 -- three blocks and a handful of pebbles. The water pressure rises with depth (hydrostatic:
 -- p = rho g depth, layer "pressure" with its isobars); the pressure around each
@@ -115,5 +116,10 @@ return {
              fluid_range = { 0, 3200 }, isolines = 6,
              colors = { wood = "#b5834a", ice = "#d8eef7", brick = "#a8442c", pebble = "#8c8c8c", tank = "#555555" },
              overlay = overlay,
-             title = "What floats? Wood, ice and brick in water" },
+             title = "What floats? Wood, ice and brick in water",
+             -- the window's live chart (porelab view: "charts"): how high each block sits
+             live = { { title = "height above the tank floor (cm)", range = { 0, 42 },
+                        series = { { name = "wood", color = "#d9a25f", value = function() return 100 * select(2, blocks[1]:position()) end },
+                                   { name = "ice", color = "#8fd3f0", value = function() return 100 * select(2, blocks[2]:position()) end },
+                                   { name = "brick", color = "#e0603f", value = function() return 100 * select(2, blocks[3]:position()) end } } } } },
 }

@@ -1,3 +1,4 @@
+-- Description: What floats? The same lab with the water as a Darcy pressure field.
 -- Classroom lab: what floats? -- the Darcy-model version of scenes/lab/buoyancy.lua (which uses
 -- the cheaper hydrostatic water; docs/hydrostatic.md compares them: the same drafts). A tank of still water with
 -- three blocks and a handful of pebbles. The water pressure rises with depth (hydrostatic,
@@ -53,6 +54,12 @@ return {
   params = params,
   run = { t_end = 4.0, fps = 30 },
   render = { size = { 800, 600 }, camera = { -0.03, -0.02, W + 0.03, 0.44 },
-             layers = "bodies,pressure,isolines,colorbar,title,time",
-             title = "What floats? wood, ice, brick in water" },
+             layers = "bodies,pressure,isolines,colorbar,scalebar,title,time",
+             colors = { wood = "#b5834a", ice = "#d8eef7", brick = "#a8442c", pebble = "#8c8c8c", tank = "#555555" },
+             title = "What floats? wood, ice, brick in water",
+             -- the window's live chart (porelab view: "charts"): how high each block sits
+             live = { { title = "height above the tank floor (cm)", range = { 0, 42 },
+                        series = { { name = "wood", color = "#d9a25f", value = function() return 100 * select(2, blocks[1]:position()) end },
+                                   { name = "ice", color = "#8fd3f0", value = function() return 100 * select(2, blocks[2]:position()) end },
+                                   { name = "brick", color = "#e0603f", value = function() return 100 * select(2, blocks[3]:position()) end } } } } },
 }

@@ -1,3 +1,4 @@
+-- Description: The water rises when a block goes in: the level follows the displaced volume.
 -- Classroom lab: the water rises when a block goes in (docs/hydrostatic.md). A narrow tank of
 -- still water; a wooden block is dropped in. The water's amount is fixed (moving level): the
 -- block pushes water aside, so the level rises by the block's submerged area divided by the
@@ -36,8 +37,9 @@ local function overlay(world)
     { polygon = { { 0, 0 }, { W, 0 }, { W, level }, { 0, level } }, fill = { 0.35, 0.6, 0.95, 0.45 },
       color = { 0.12, 0.3, 0.62, 1 }, width = 1 },
     { line = { { -0.01, H }, { 0, H } }, color = "#d62728", width = 2 },
-    { text = string.format("level %+.2f mm (at rest: %+.2f mm)", 1000 * (level - H), 1000 * expect),
-      at = { 12, 56 }, space = "pixel", size = 15 },
+    -- left of the tank, clear of its wall: the rise so far and the rise expected at rest
+    { text = string.format("rise %+.2f mm", 1000 * (level - H)), at = { 12, 56 }, space = "pixel", size = 15 },
+    { text = string.format("at rest %+.2f mm", 1000 * expect), at = { 12, 78 }, space = "pixel", size = 15 },
   }
 end
 
@@ -46,6 +48,7 @@ return {
   params = params,
   run = { t_end = 4.0, fps = 30 },
   render = { size = { 600, 700 }, camera = { -0.03, -0.02, W + 0.03, 0.30 },
-             layers = "bodies,overlay,title,time", overlay = overlay,
+             layers = "bodies,overlay,title,time,scalebar", overlay = overlay,
+             colors = { wood = "#b5834a", tank = "#555555" },
              title = "The water rises: a block in a narrow tank" },
 }

@@ -1,3 +1,4 @@
+-- Description: Terzaghi consolidation: loaded grain columns squeeze their pore water out.
 -- Terzaghi consolidation of columns of grains (docs/soil.md §5.2).
 -- NCOL saturated columns of discs side by side (the same recipe, different random packings),
 -- each in its own box under its own rigid piston, drained at the bottom only (a porous stone
@@ -35,7 +36,7 @@ local DP = 3000                      -- load increment studied, Pa
 local D_SAND = 1e-3                  -- hydraulic conductivity of the columns, m/s
 local KF = 1e6                       -- fluid bulk modulus, Pa (~10 x the columns' modulus)
 local RHO_F, G = 1000, 9.81
--- tolerance on the mean U of the columns: the issue's 5% at T_v = 0.2 and 0.5; 10% at 0.1, where
+-- tolerance on the mean U of the columns: 5% at T_v = 0.2 and 0.5; 10% at 0.1, where
 -- four measured ensembles gave +1.4 to +5.3% (an early-time bias of ~+4% not explained, plus
 -- ~4% standard error of a four-column mean: docs/soil.md §5.2)
 local TOL = opt.tol and { [0.1] = opt.tol, [0.2] = opt.tol, [0.5] = opt.tol } or { [0.1] = 0.10, [0.2] = 0.05, [0.5] = 0.05 }
@@ -63,7 +64,7 @@ for c = 1, NCOL do
   -- the piston waits above the column (fixed until T_SEAT). An oedometer's piston is guided:
   -- it moves only vertically under the load and never turns (guide = {0, 1}: the guide takes
   -- the side force and the moment). Free, it tilted 3-5 degrees on the uneven column and a
-  -- corner entered a side wall by up to 0.8 mm (issue 13 item 11).
+  -- corner entered a side wall by up to 0.8 mm.
   col.piston = w:rectangle { center = { x0 + W / 2, 0.2 }, width = W - 0.0006, height = PH, material = pmat,
                              fixed = true, guide = { 0, 1 } }
   w:fluid_quad { corners = { { x0, 0 }, { x0 + W, 0 }, { x0 + W, HMESH }, { x0, HMESH } }, ndivx = 4, ndivy = 13 }

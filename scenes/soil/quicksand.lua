@@ -1,3 +1,4 @@
+-- Description: Quicksand: rising seepage lifts a sand bed at the critical gradient; the block sinks.
 -- Quicksand tank (docs/soil.md §5.1). Water is pushed up through a sand bed; the excess head
 -- under the bed is raised step by step (plateaus). Below the critical gradient
 -- i_c = (1 - n)(G_s - 1) the bed holds and carries a heavy block on its surface; at i ~ i_c

@@ -1,9 +1,10 @@
--- Constant-volume simple shear of the 20-disc samples of seed 003 (Tan 1990, §5.4-5.6,
+-- Description: Simple shear of small grain samples, dry and saturated, steady and cyclic.
+-- Constant-volume simple shear of the 20-disc samples of Tan (1990, §5.4-5.6,
 -- Table 5.1), dry and saturated, monotonic and cyclic (docs/soil.md §5.4).
 --
 -- Six boxes of the same compressed sample, in two rows (top: monotonic shear to 12.5 %;
 -- bottom: cyclic shear, +-2.5 % for 5 cycles), three columns:
---   DRY, SERVO      the top wall holds the vertical force (seed 003 §5.5.3, Figs. 5.22-5.23):
+--   DRY, SERVO      the top wall holds the vertical force (Tan 1990 §5.5.3, Figs. 5.22-5.23):
 --                   the sample changes volume (a loose sample contracts);
 --   DRY, CONST. VOL the top wall is held at its height: no volume change, so the vertical
 --                   effective stress sigma'_v changes instead;
@@ -25,7 +26,7 @@ local SAMPLE = opt.sample or "loose"
 local ROWS = opt.rows or "both"
 
 local mm = 1e-3
--- seed 003 Table 5.1 and §5.4.1, converted to SI per metre of depth (the thesis uses a 1 cm
+-- Tan 1990 Table 5.1 and §5.4.1, converted to SI per metre of depth (the thesis uses a 1 cm
 -- thick slice: k_N = 1875e3 gF/cm per cm of depth = 1.8387e8 N/m per m of depth)
 local KN = 1875e3 * 9.80665e-3 / 1e-2 * 100
 local MU_DD, MU_DW = math.tan(math.rad(22)), math.tan(math.rad(10))
@@ -104,7 +105,7 @@ end
 local solid = 0
 for _, d in ipairs(sample) do solid = solid + math.pi * d[3] ^ 2 end
 
--- 1. compression with servo walls to sigma_v on all sides (seed 003 §5.5.1 moves walls 2, 3, 4
+-- 1. compression with servo walls to sigma_v on all sides (Tan 1990 §5.5.1 moves walls 2, 3, 4
 --    inward); the dense sample (§5.6.1.1) is compressed without friction
 if SAMPLE == "dense" then w:pair(grain, grain, { friction = 0 }); w:pair(grain, wall, { friction = 0 }); w:pair(grain, lidm, { friction = 0 }) end
 local function geometry(b)
@@ -259,7 +260,7 @@ end
 
 local function measure(b)
   local x, y = b.lid:position()
-  -- shear forces S3 (top) and S1 (bottom) of seed 003 Fig. 5.22: the grains' horizontal force
+  -- shear forces S3 (top) and S1 (bottom) of Tan 1990 Fig. 5.22: the grains' horizontal force
   -- on the lid and on the floor, positive along the shear; fy > 0 pushes the lid up (the lid is
   -- kinematic: the force is the contacts', the water is measured separately)
   local fx, fy = b.lid:force()
@@ -325,7 +326,7 @@ local function mean_window(hist, t0, t1, key)
 end
 local function on_finish(world)
   local n_por = 1 - solid / (boxes[1].W * boxes[1].H)
-  print(string.format("simple_shear: %s sample, 20 discs compressed to %.0f kPa in %.3f s: box %.2f x %.2f mm, areal porosity %.3f, void ratio e = %.3f (seed 003: 8.9 x 6.9 mm, e = 0.261)",
+  print(string.format("simple_shear: %s sample, 20 discs compressed to %.0f kPa in %.3f s: box %.2f x %.2f mm, areal porosity %.3f, void ratio e = %.3f (Tan 1990, loose sample: 8.9 x 6.9 mm, e = 0.261)",
     SAMPLE, SIGMA_V / 1e3, t_c, boxes[1].W / mm, boxes[1].H / mm, n_por, n_por / (1 - n_por)))
   if not compress_ok then print("  note: the compression stopped at its time limit before the wall forces were within 2 %") end
   print(string.format("  undrained boxes: K_f = %.3g Pa, conductivity %.3g m/s, sealed; coupling %s", KF, D_SAND, COUPLING and "on" or "OFF"))
@@ -433,8 +434,13 @@ local function overlay(world)
   local items = {}
   for _, row in ipairs(rows) do
     local b0 = row.box.servo
-    local label = row.kind == "monotonic" and "monotonic shear" or string.format("cyclic shear, \u{00B1}%.1f %%", 100 * GAMMA_CYC)
-    items[#items + 1] = { text = label, at = { 0.9995, row.oy + 15.5 * mm }, size = 16 }
+    if row.kind == "monotonic" then
+      items[#items + 1] = { text = "monotonic shear", at = { 0.9995, row.oy + 15.5 * mm }, size = 16 }
+    else -- two short lines, clear of the upper row's box names and of this row's walls
+      items[#items + 1] = { text = "cyclic", at = { 0.9995, row.oy + 15.3 * mm }, size = 16 }
+      items[#items + 1] = { text = string.format("\u{00B1}%.1f %%", 100 * GAMMA_CYC), at = { 0.9995, row.oy + 14.0 * mm },
+                            size = 16 }
+    end
     for _, col in ipairs(COLS) do
       local b = row.box[col]
       local name = ({ servo = "dry, servo (drained)", cv = "dry, constant volume", und = "saturated, undrained" })[col]

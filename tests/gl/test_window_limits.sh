@@ -11,12 +11,13 @@ rm -rf "$OUT"; mkdir -p "$OUT"
 XPID=""; VPID=""
 trap '[ -n "$VPID" ] && kill $VPID 2>/dev/null; [ -n "$XPID" ] && kill $XPID 2>/dev/null' EXIT
 fail() { echo "FAIL: $*"; echo "--- window log:"; cat "$OUT/view.log" 2>/dev/null; exit 1; }
-n=61
-while [ -e /tmp/.X11-unix/X$n ] || [ -e /tmp/.X$n-lock ]; do n=$((n + 1)); done
-Xvfb :$n -screen 0 800x600x24 -nolisten tcp >/dev/null 2>&1 &
+# Xvfb picks a free display itself (-displayfd: no race with other test runs on the machine)
+Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$OUT/xvfb.display" >/dev/null 2>&1 &
 XPID=$!
+i=0; while [ ! -s "$OUT/xvfb.display" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+n=$(head -1 "$OUT/xvfb.display")
+[ -n "$n" ] || { echo "FAIL: Xvfb did not start"; exit 1; }
 export DISPLAY=:$n
-i=0; while [ ! -e /tmp/.X11-unix/X$n ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 cd "$SRC" || exit 1
 sc=tests/cli/security/cpu_hook.lua
 "$P" view "$sc" --max-cpu 1 --size 320x240 --out "$OUT/v" >"$OUT/view.log" 2>&1 &

@@ -15,12 +15,13 @@ P=$1; PSNR=$2; SRC=$3; OUT=$4
 rm -rf "$OUT"; mkdir -p "$OUT"
 XPID=""; VPID=""
 trap '[ -n "$VPID" ] && kill $VPID 2>/dev/null; [ -n "$XPID" ] && kill $XPID 2>/dev/null' EXIT
-n=71
-while [ -e /tmp/.X11-unix/X$n ] || [ -e /tmp/.X$n-lock ]; do n=$((n + 1)); done
-Xvfb :$n -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
+# Xvfb picks a free display itself (-displayfd: no race with other test runs on the machine)
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$OUT/xvfb.display" >/dev/null 2>&1 &
 XPID=$!
+i=0; while [ ! -s "$OUT/xvfb.display" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+n=$(head -1 "$OUT/xvfb.display")
+[ -n "$n" ] || { echo "FAIL: Xvfb did not start"; exit 1; }
 export DISPLAY=:$n
-i=0; while [ ! -e /tmp/.X11-unix/X$n ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 cd "$SRC" || exit 1
 bad=0; ok=0; skipped=0
 for sc in scenes/*.lua scenes/*/*.lua; do

@@ -12,13 +12,17 @@
 #     fixing the file reloads it;
 #  7. the other keys: space plays and pauses, +/- change the steps per frame, layer keys,
 #     colouring (c), fluid field (f), colour range ([ ]), a drag on empty space pans and z
-#     restores, the help (h) is drawn in the window, r restarts at t = 0 (= headless).
+#     restores, the help (h) is drawn in the window, r restarts at t = 0 (= headless);
+#  8. the control panel lies outside the scene's area; its buttons and toggles work by mouse;
+#  9. the live chart (render.live) updates while the scene plays, outside the scene's area;
+# 10. the scene picker lists the shipped scenes and opens one by a click.
 # The scene is the buoyancy lab on the Darcy model (scenes/lab/buoyancy_darcy.lua), which has a
 # pressure field for the fluid keys to change.
 #   test_window_xvfb.sh PORELAB GL_PSNR GL_XCAPTURE SOURCE_DIR OUT_DIR
 set -u
 unset PORELAB_GL_SAMPLES PORELAB_WINDOW_SAMPLES # the goldens and thresholds are for the defaults
 export PORELAB_WINDOW_DEBUG=1 # the window prints its camera with each screenshot (for clicks)
+export PORELAB_SCENES="$4/scenes" # the picker lists the source tree's scenes (the scene runs from a copy)
 P=$1; PSNR=$2; CAP=$3; SRC=$4; OUT=$5
 rm -rf "$OUT"; mkdir -p "$OUT"
 XPID=""; VPID=""
@@ -29,18 +33,21 @@ cleanup() {
 trap cleanup EXIT
 fail() { echo "FAIL: $*"; echo "--- window log:"; cat "$OUT/view.log" 2>/dev/null; exit 1; }
 
-n=91
-while [ -e /tmp/.X11-unix/X$n ] || [ -e /tmp/.X$n-lock ]; do n=$((n + 1)); done
-Xvfb :$n -screen 0 1024x768x24 -nolisten tcp >"$OUT/xvfb.log" 2>&1 &
+# Xvfb picks a free display itself (-displayfd: no race with other test runs on the machine)
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$OUT/xvfb.display" >"$OUT/xvfb.log" 2>&1 &
 XPID=$!
+i=0; while [ ! -s "$OUT/xvfb.display" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+n=$(head -1 "$OUT/xvfb.display")
+[ -n "$n" ] || { echo "FAIL: Xvfb did not start"; exit 1; }
 export DISPLAY=:$n
-i=0; while [ ! -e /tmp/.X11-unix/X$n ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 
 cp "$SRC/scenes/lab/buoyancy_darcy.lua" "$OUT/scene.lua"
 "$P" view "$OUT/scene.lua" --paused --size 640x480 --out "$OUT/v" >"$OUT/view.log" 2>&1 &
 VPID=$!
 W=$(timeout 20 xdotool search --sync --name "porelab - $OUT/scene.lua" | head -1)
 [ -n "$W" ] || fail "the window did not appear"
+# the start line follows the window's creation (GL set up): wait for it
+i=0; while ! grep -q "porelab view" "$OUT/view.log" && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
 grep -q "porelab view" "$OUT/view.log" || fail "no start line"
 
 # waits until the log has N screenshot lines; prints the last one's time
@@ -212,29 +219,79 @@ q=$("$PSNR" "$OUT/window_panel.png" "$OUT/v/screenshot_020.png" 60 0 0 $PX0 480)
   fail "a HUD pixel inside the scene's area ($q dB over x < $PX0)"
 if q2=$("$PSNR" "$OUT/window_panel.png" "$OUT/v/screenshot_020.png" 60); then
   fail "the control panel is not drawn ($q2 dB over the whole window)"; fi
-# the "one step" button (second of the first row: x from 430 + 102 to 630, y 8 .. 30)
+# the controls' boxes come from the window's log (PORELAB_WINDOW_DEBUG: "control: KIND INDEX
+# x0 y0 x1 y1 [NAME]", printed when the panel's layout changes); ctl KIND [INDEX] clicks the
+# centre of the last one printed
+ctl() {
+  line=$(grep "^control: $1 ${2:-0} " "$OUT/view.log" | tail -1)
+  [ -n "$line" ] || fail "no control $1 ${2:-0} in the window's log"
+  set -- $line
+  xdotool mousemove --window "$W" $((($4 + $6) / 2)) $((($5 + $7) / 2)) click 1
+}
 t_a=$(shot_time 21)
-xdotool mousemove --window "$W" 580 19 click 1; sleep 0.3
+ctl step; sleep 0.3
 key p; wait_shots 22
 t_b=$(shot_time 22)
 [ "$t_a" != "$t_b" ] || fail "the one-step button did not step (t = $t_a s)"
-# the play button (x 430 .. 528) plays, a second click pauses
-xdotool mousemove --window "$W" 470 19 click 1; sleep 0.6
-xdotool mousemove --window "$W" 470 19 click 1; sleep 0.2
+# the play button plays, a second click pauses
+ctl play; sleep 0.6
+ctl play; sleep 0.2
 key p; wait_shots 23
 t_c=$(shot_time 23)
 awk -v a="$t_b" -v b="$t_c" 'BEGIN { exit !(b > a) }' || fail "the play button did not play ($t_b -> $t_c s)"
 # the first layer box ("grains and bodies") hides the bodies; a second click shows them
-xdotool mousemove --window "$W" 436 118 click 1; sleep 0.3
+ctl layer 0; sleep 0.3
 key p; wait_shots 24
 if q3=$("$PSNR" "$OUT/v/screenshot_023.png" "$OUT/v/screenshot_022.png" 60); then
   fail "the bodies toggle changed nothing ($q3 dB)"; fi
-xdotool mousemove --window "$W" 436 118 click 1; sleep 0.2
+ctl layer 0; sleep 0.2
 # the restart button: back to t = 0
-xdotool mousemove --window "$W" 470 46 click 1; sleep 0.3
+ctl restart; sleep 0.3
 key p; wait_shots 25
 [ "$(shot_time 25)" = 0 ] || fail "the restart button did not restart ($(shot_time 25) s)"
 echo "panel: no HUD pixel in the scene's area ($q dB), panel drawn; step ($t_a -> $t_b s), play ($t_b -> $t_c s), layer toggle, restart work by mouse"
+
+# 9. the live chart (the scene's render.live: the blocks' heights): the charts button shows it
+#    in the panel; while the scene plays the chart changes; no HUD pixel in the scene's area
+ctl charts; sleep 0.3
+xdotool mousemove --window "$W" 200 200; sleep 0.2
+"$CAP" "$W" "$OUT/window_chart_1.png" || fail "capture with the chart"
+ctl play; sleep 1.0; ctl play; sleep 0.3
+xdotool mousemove --window "$W" 200 200; sleep 0.2
+key p; wait_shots 26
+"$CAP" "$W" "$OUT/window_chart_2.png" || fail "capture with the chart"
+q4=$("$PSNR" "$OUT/window_chart_2.png" "$OUT/v/screenshot_025.png" 60 0 0 $PX0 480) ||
+  fail "a HUD pixel inside the scene's area with the chart shown ($q4 dB over x < $PX0)"
+PW=$((640 - PX0))
+if q5=$("$PSNR" "$OUT/window_chart_1.png" "$OUT/window_chart_2.png" 60 $PX0 115 $PW 365); then
+  fail "the live chart did not change while the scene played ($q5 dB)"; fi
+echo "live chart: updates while playing ($q5 dB between two moments), no HUD pixel in the scene's area ($q4 dB)"
+
+# 10. the scene picker: the scenes button lists the shipped scenes (lab/ first) with their
+#     descriptions; a click on one opens it (window title, log); no HUD pixel in the scene's area
+ctl scenes; sleep 0.4
+grep -q "^control: pick .* lab/buoyancy$" "$OUT/view.log" || fail "the picker does not list lab/buoyancy"
+grep -q "^control: pick .* lab/floating_block$" "$OUT/view.log" || fail "the picker does not list lab/floating_block"
+"$CAP" "$W" "$OUT/window_picker.png" || fail "capture with the picker"
+line=$(grep "^control: pick .* lab/floating_block$" "$OUT/view.log" | tail -1)
+set -- $line
+xdotool mousemove --window "$W" $((($4 + $6) / 2)) $((($5 + $7) / 2)) click 1
+i=0; while ! grep -q '^open: ' "$OUT/view.log" && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+grep -q '^open: .*lab/floating_block.lua' "$OUT/view.log" || fail "clicking lab/floating_block did not open it"
+sleep 0.3
+xdotool getwindowname "$W" | grep -q 'lab/floating_block.lua' || fail "the window title does not name the new scene"
+xdotool mousemove --window "$W" 200 200; sleep 0.2
+key p; wait_shots 27
+"$CAP" "$W" "$OUT/window_opened.png" || fail "capture after opening"
+q6=$("$PSNR" "$OUT/window_opened.png" "$OUT/v/screenshot_026.png" 60 0 0 $PX0 480) ||
+  fail "a HUD pixel inside the scene's area after opening a scene ($q6 dB over x < $PX0)"
+key i p; wait_shots 28 # the scene alone (HUD off) against the headless render at the same time
+T=$(shot_time 28)
+"$P" still "$SRC/scenes/lab/floating_block.lua" --at "$T" --size 640x480 -o "$OUT/headless_fb.png" --renderer gl \
+  --out "$OUT/h" -q || fail "headless still of the opened scene"
+q7=$("$PSNR" "$OUT/v/screenshot_027.png" "$OUT/headless_fb.png" 40) || fail "opened scene vs headless ($q7 dB)"
+key i
+echo "picker: lists the scenes, opens lab/floating_block (= headless, $q7 dB), no HUD pixel in the scene's area ($q6 dB)"
 
 key q
 i=0; while kill -0 "$VPID" 2>/dev/null && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done

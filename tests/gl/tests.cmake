@@ -35,7 +35,7 @@ if(TARGET porelab_gl)
     set_tests_properties(gl_window_xvfb PROPERTIES LABELS gl TIMEOUT 240)
     add_test(NAME gl_window_scenes COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/gl/test_window_scenes.sh
       $<TARGET_FILE:porelab> $<TARGET_FILE:gl_psnr> ${CMAKE_SOURCE_DIR} ${PL_GL_OUT}/scenes)
-    set_tests_properties(gl_window_scenes PROPERTIES LABELS gl TIMEOUT 600)
+    set_tests_properties(gl_window_scenes PROPERTIES LABELS gl TIMEOUT 900)
     # the window's sandbox limits: a hook's endless loop stopped with its line (issue 13 item 4)
     add_test(NAME gl_window_limits COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/gl/test_window_limits.sh
       $<TARGET_FILE:porelab> ${CMAKE_SOURCE_DIR} ${PL_GL_OUT}/limits)

@@ -298,6 +298,9 @@ static int test_chart(void) {
         return 1;
     }
     ENSURE(pl_chart_write(PL_RENDER_OUT_DIR "/chart.svg", &d, err, sizeof err) == 0);
+    /* SVG charts keep their text as text (PLplot's svg device), with the title's words */
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/chart.svg", "<svg"));
+    ENSURE(file_contains(PL_RENDER_OUT_DIR "/chart.svg", "<text"));
     ENSURE(pl_chart_write(PL_RENDER_OUT_DIR "/chart.pdf", &d, err, sizeof err) == 0);
     ENSURE(starts_with(PL_RENDER_OUT_DIR "/chart.pdf", "%PDF-"));
     pl_compare_tolerance tol = pl_default_compare_tolerance();

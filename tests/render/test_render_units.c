@@ -10,6 +10,7 @@
 #include "draw_world.h"
 #include "image_compare.h"
 #include "isolines.h"
+#include "porelab/fluid.h"
 
 static int test_camera_fit(void) {
     pl_px_rect area = {0, 0, 400, 400};
@@ -337,6 +338,26 @@ static int test_png_roundtrip_and_compare(void) {
     return 0;
 }
 
+/* Round-off drawn as zero (docs/rendering.md, house style rule 3): below the absolute floor
+ * (0.01 Pa) or 1e-6 of the field's span, whichever is larger; values above stay. */
+static int test_denoise_scales_with_range(void) {
+    double big[4] = {0.0, 2e6, 1.5, 2.5}; /* span 2e6 Pa: threshold 2 Pa */
+    double small[4] = {0.0, 100.0, 0.005, 0.02}; /* span 100 Pa: the 0.01 Pa floor */
+    double neg[4] = {-1e6, 1e6, -1.9, 2.1};      /* signed, span 2e6 Pa */
+    double *cases[3] = {big, small, neg};
+    const double expect[3][4] = {{0.0, 2e6, 0.0, 2.5}, {0.0, 100.0, 0.0, 0.02}, {-1e6, 1e6, 0.0, 2.1}};
+    for (int k = 0; k < 3; k++) {
+        pl_render_scene s;
+        memset(&s, 0, sizeof s);
+        s.fluid_values = cases[k];
+        s.fluid_node_count = 4;
+        s.fluid_field = PL_FLUID_EXCESS_PRESSURE;
+        pl_render_scene_denoise_fluid(&s);
+        for (int i = 0; i < 4; i++) ENSURE_NEAR(cases[k][i], expect[k][i], 0.0);
+    }
+    return 0;
+}
+
 int main(void) {
     RUN(test_camera_fit);
     RUN(test_colormaps);
@@ -347,5 +368,6 @@ int main(void) {
     RUN(test_draw_list);
     RUN(test_mean_stress);
     RUN(test_png_roundtrip_and_compare);
+    RUN(test_denoise_scales_with_range);
     return pl_test_report();
 }
