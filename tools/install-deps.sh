@@ -12,8 +12,9 @@ PKGS=(
   libosmesa6-dev libsdl2-dev
   libgmsh-dev liblapack-dev liblapacke-dev
 )
-# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps.
-OPTIONAL=(ffmpeg xvfb xdotool parallel)
+# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps;
+# lammps + openmpi-bin: runs of exported dry disc scenes (porelab export-lammps, test cli_lammps_settle).
+OPTIONAL=(ffmpeg xvfb xdotool parallel lammps openmpi-bin)
 missing=()
 for p in "${PKGS[@]}" "${OPTIONAL[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
