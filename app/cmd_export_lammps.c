@@ -245,8 +245,8 @@ int pl_cmd_export_lammps(int argc, char **argv)
     if (pl_world_model_count(w) == 0 && pl_world_has_solid(w))
         problem(&pr, "finite-element solids: LAMMPS' GRANULAR package has none");
     if (pl_world_bond_total(w) > 0)
-        problem(&pr, "%d bonds between grains: not written by the export (LAMMPS' BPM package has another law)",
-                pl_world_bond_total(w));
+        problem(&pr, "%d bond%s between grains: gran/hooke/history has no bonded contacts", pl_world_bond_total(w),
+                pl_world_bond_total(w) > 1 ? "s" : "");
     if (flag(w, "GLOBAL_DAMPING_ROT") > 0)
         problem(&pr, "rotational global damping GLOBAL_DAMPING_ROT = %g N m s: no fix of the GRANULAR package damps "
                 "rotation alone", flag(w, "GLOBAL_DAMPING_ROT"));

@@ -22,3 +22,6 @@ pl_cli_test(lammps_import_bad_dump RC 1 ARGS import-lammps tests/cli/lammps/bad.
   MATCH "bad.dump:9: the dump needs the columns id type radius x y")
 pl_cli_test(lammps_import_no_out RC 2 ARGS import-lammps tests/cli/lammps/bad.dump
   MATCH "give one dump file and --out DIR")
+pl_cli_test(lammps_refuse_mix RC 1 ARGS export-lammps tests/cli/lammps/refuse_mix.lua --out ${PL_CLI_OUT}/lammps_refuse_mix
+  NO_FILE ${PL_CLI_OUT}/lammps_refuse_mix/in.lammps
+  MATCH "cannot express 5 features this scene uses:.*wall 1 \\(from \\(0, 0\\) to \\(1, 0.2\\) m\\) is slanted.*1 bond between grains.*GLOBAL_DAMPING_ROT = 0.01.*rolling resistance 0.1 between discs.*cohesion 2 N between discs")
