@@ -10,6 +10,8 @@ int pl_cmd_flags(int argc, char **argv);
 int pl_cmd_compare(int argc, char **argv); /* app/cmd_compare.c */
 int pl_cmd_sweep(int argc, char **argv);         /* cmd_sweep.c */
 int pl_cmd_collect(int argc, char **argv);       /* cmd_collect.c */
+int pl_cmd_export_lammps(int argc, char **argv); /* cmd_export_lammps.c */
+int pl_cmd_import_lammps(int argc, char **argv); /* cmd_import_lammps.c */
 int pl_cmd_view(int argc, char **argv); /* app/window/cmd_view.c (gl) */
 
 #endif

@@ -19,6 +19,8 @@ static const struct {
     {"compare", pl_cmd_compare, "run benchmark problems with every method: error against CPU time"},
     {"sweep", pl_cmd_sweep, "expand parameters and seeds into jobs (GNU parallel, Slurm array, Snakemake)"},
     {"collect", pl_cmd_collect, "gather the manifests of runs into one CSV and chart a result"},
+    {"export-lammps", pl_cmd_export_lammps, "write a dry disc scene as a LAMMPS input (GRANULAR package)"},
+    {"import-lammps", pl_cmd_import_lammps, "read LAMMPS dumps back: frames, VTK, contact diagnostics"},
 };
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
 

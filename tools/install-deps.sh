@@ -12,10 +12,11 @@ PKGS=(
   libosmesa6-dev libsdl2-dev
   libgmsh-dev liblapack-dev liblapacke-dev
 )
-# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps.
+# ffmpeg: videos; xvfb + xdotool: the live-window test under a virtual X server; parallel: sweeps;
+# lammps + openmpi-bin: runs of exported dry disc scenes (porelab export-lammps, test cli_lammps_settle).
 # The benchmarks' peers are not installed here (the tests do not need them):
 #   apt-get install liggghts freefem++   (tests/bench/run_liggghts.sh, run_freefem*.sh)
-OPTIONAL=(ffmpeg xvfb xdotool parallel)
+OPTIONAL=(ffmpeg xvfb xdotool parallel lammps openmpi-bin)
 missing=()
 for p in "${PKGS[@]}" "${OPTIONAL[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -398,6 +398,7 @@ pl_cli_test(bad_unstable_line RC 1 ARGS run ${PL_BAD}/unstable.lua --quiet --out
 pl_cli_test(bad_coincident RC 1 ARGS run ${PL_BAD}/coincident.lua --steps 10 --quiet --out ${PL_CLI_OUT}/coincident
   MATCH "^porelab: tests/cli/bad/coincident.lua:7: run stopped at t = 0 s \\(step 0 of 10\\): bodies piled on top of each other: body 1 \\(disc, radius 0.01 m, at \\(0, 0\\)\\) has more than 64 bodies .*20000 bodies have their centre in the 0.01 m square")
 include(${CMAKE_CURRENT_LIST_DIR}/sweep/tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/lammps/tests.cmake)
 # Every command of the ```sh quick blocks of README.md and docs/*.md runs as written (with the
 # built porelab on PATH, in a scratch copy of the layout; tests/cli/docs_commands.sh).
 add_test(NAME docs_commands COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/docs_commands.sh
