@@ -538,11 +538,20 @@ int pl_cmd_sweep(int argc, char **argv)
             fprintf(stderr, "porelab sweep: GNU parallel could not be run (see above)\n");
             goto done;
         }
+        if (failed > 101) {
+            /* GNU parallel: 1-100 failed jobs, 101 more than 100, 255 (and others) an error of its own or a
+               signal; the jobs that finished keep their manifests */
+            fprintf(stderr, "porelab sweep: GNU parallel stopped after %.1f s (exit status %d: interrupted, or an "
+                            "error of its own; log %s); finished jobs are kept, re-running the sweep resumes\n",
+                    wall, failed, joblog);
+            goto done;
+        }
         printf("  %-12s%lld job%s through GNU parallel --jobs %lld in %.1f s (%.1f jobs/hour); log %s\n", "ran",
                todo, todo == 1 ? "" : "s", jobs_at_once, wall, wall > 0 ? 3600.0 * (double)todo / wall : 0, joblog);
         if (failed > 0) {
-            printf("  %-12s%d job%s failed (exit status in their manifest.json and run.log); re-running the sweep "
-                   "runs them again\n", "failed", failed, failed == 1 ? "" : "s");
+            printf("  %-12s%s%d job%s failed (exit status in their manifest.json and run.log); re-running the sweep "
+                   "runs them again\n", "failed", failed == 101 ? "more than " : "", failed == 101 ? 100 : failed,
+                   failed == 1 ? "" : "s");
             goto done;
         }
         printf("  %-12sporelab collect %s\n", "next", dir);

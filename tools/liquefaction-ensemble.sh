@@ -30,6 +30,8 @@ nice -n 10 "$exe" sweep scenes/soil/liquefaction.lua --grid "amp_mm=3.5,5" --see
   --out "$out"
 "$exe" collect "$out" -o "$csv" --chart ru_peak:amp_mm --chart-out "$png" \
   --title "Liquefaction: peak excess pore pressure ratio, loose saturated tank"
+# paths in the CSV relative to the repository (the jobs ran with absolute ones)
+sed -i "s|$root/||g" "$csv"
 
 # the markdown table: one row per run, then mean +- s.d. per amplitude
 awk -F, '
@@ -43,7 +45,7 @@ awk -F, '
     crit[n] = v("criteria_met")
   }
   END {
-    print "| amplitude | seed | loose wet r_u: peak / end of shaking | dense wet r_u peak | building settlement loose wet / dry / dense, mm | pipe rise loose wet / dry, mm | criteria met | CPU s |"
+    print "| amplitude | seed | loose wet r_u: peak during shaking / mean of its last second | dense wet r_u peak | building settlement loose wet / dry / dense, mm | pipe rise loose wet / dry, mm | criteria met | CPU s |"
     print "|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= n; i++) {
       if (st[i] != 0) { printf "| %.2f g | %s | run failed (exit %s) | | | | | |\n", amp[i] / 10, seed[i], st[i]; continue }
