@@ -8,6 +8,8 @@
  * interpolation, assembly, factorisation, solve, forces).
  *     bench_navier_stokes [OUT_DIR]     CSV to OUT_DIR/bench_navier_stokes.csv; with PLplot the
  *                                       charts OUT_DIR/ns_cavity_error_cpu.png, ns_dfg_error_cpu.png
+ *     bench_navier_stokes --moving      only the cost per coupled step of the settling disc
+ *     bench_navier_stokes --plates K L  lambda of a fixed circle between plates (k = K, ends at +-L)
  *     bench_navier_stokes --cavity-p2 H only the Taylor-Hood P2/P1 cavity at Re = 100 on a uniform
  *                                       mesh of size H, one line "FF ..." for run_freefem_ns.sh */
 #include "navier_stokes/ns_cases.h"
@@ -134,6 +136,10 @@ int main(int argc, char **argv) {
         printf("plates k=%.4f L=%.1f h=%.3f/%.3f: %d unknowns, lambda = F/(mu U0) = %.5f (reaction), %.5f (line "
                "integral), T/(mu U_mean) = %.4f\n",
                k, L, hn, hf, r.nunk, r.lam_react, r.lam_line, 1.5 * r.lam_react);
+        return 0;
+    }
+    if (argc > 1 && !strcmp(argv[1], "--moving")) {
+        moving_grain_cost(NULL);
         return 0;
     }
     if (argc > 2 && !strcmp(argv[1], "--cavity-p2")) {
