@@ -73,23 +73,7 @@ int ns_system_init(ns_system *s, ns_mesh *m, int kind, int ntags) {
             for (int k = 0; k < 3; k++) d[3 + k] = M->nv + M->tri_edge[3 * t + k];
         if (has_bub) d[nl - 1] = M->nv + (has_edge ? M->ne : 0) + t;
     }
-    for (int i = 0; i < M->nv; i++) {
-        s->vxy[2 * i] = M->xy[2 * i];
-        s->vxy[2 * i + 1] = M->xy[2 * i + 1];
-    }
-    if (has_edge)
-        for (int e = 0; e < M->ne; e++) {
-            const double *a = M->xy + 2 * M->edge[2 * e], *b = M->xy + 2 * M->edge[2 * e + 1];
-            s->vxy[2 * (M->nv + e)] = 0.5 * (a[0] + b[0]);
-            s->vxy[2 * (M->nv + e) + 1] = 0.5 * (a[1] + b[1]);
-        }
-    if (has_bub)
-        for (int t = 0; t < M->nt; t++) {
-            const int j = M->nv + (has_edge ? M->ne : 0) + t;
-            const int32_t *v = M->tri + 3 * t;
-            s->vxy[2 * j] = (M->xy[2 * v[0]] + M->xy[2 * v[1]] + M->xy[2 * v[2]]) / 3.0;
-            s->vxy[2 * j + 1] = (M->xy[2 * v[0] + 1] + M->xy[2 * v[1] + 1] + M->xy[2 * v[2] + 1]) / 3.0;
-        }
+    ns_system_update_geometry(s); /* the velocity nodes' coordinates */
     /* pattern: every element entry except the zero pressure-pressure block, plus every diagonal */
     const int nvv = 2 * nl;
     const int64_t per = (int64_t)n * n - 9;
