@@ -22,6 +22,9 @@ static const pl_opt_spec collect_specs[] = {
     {"--chart", NULL, "RESULT:PARAM", "chart RESULT against PARAM: each run, the mean and +-1 s.d. per value"},
     {"--chart-out", NULL, "FILE", "chart file, .png/.svg/.pdf (default: beside the CSV, RESULT_vs_PARAM.png)"},
     {"--title", NULL, "TEXT", "chart title (default: scene, result and parameter)"},
+    {"--xlabel", NULL, "TEXT", "chart x-axis label (default: the parameter's name and unit)"},
+    {"--ylabel", NULL, "TEXT", "chart y-axis label (default: the result's name and unit)"},
+    {"--line", NULL, "VALUE:LABEL", "a horizontal reference line at VALUE (e.g. a criterion), named LABEL in the legend"},
     {NULL, NULL, NULL, NULL}};
 
 static const pl_command_help collect_help = {
@@ -30,7 +33,8 @@ static const pl_command_help collect_help = {
     "a row per run with its parameters, seed, exit status, results, wall and CPU time and\n"
     "state hash, below '#' lines with the scene, the build and the units. --chart draws a\n"
     "result against a parameter: every run as a point, the mean over the runs at each value\n"
-    "(seeds) as a line, and the mean +- one standard deviation dashed.",
+    "(seeds) as a line, and the mean +- one standard deviation dashed. Runs that differ in\n"
+    "other parameters get a line each (at most 4; with 3 or 4 the +- s.d. lines are left out).",
     collect_specs};
 
 typedef struct col {
@@ -302,7 +306,11 @@ static int cmp_dbl(const void *a, const void *b)
 #define MAX_GROUPS 4
 
 /* RESULT against PARAM; runs that differ in other parameters go to separate groups (at most 4) */
-static int write_chart(const table *t, const char *spec, const char *path, const char *title_opt)
+typedef struct chart_text {
+    const char *title, *xlabel, *ylabel, *line; /* NULL = default / no reference line */
+} chart_text;
+
+static int write_chart(const table *t, const char *spec, const char *path, const chart_text *txt)
 {
     char rname[64], pname[64];
     const char *c = strchr(spec, ':');
@@ -313,6 +321,18 @@ static int write_chart(const table *t, const char *spec, const char *path, const
     memcpy(rname, spec, (size_t)(c - spec));
     rname[c - spec] = '\0';
     snprintf(pname, sizeof pname, "%s", c + 1);
+    double line_y = NAN;
+    const char *line_label = NULL;
+    if (txt->line) {
+        char *end;
+        line_y = strtod(txt->line, &end);
+        if (end == txt->line || *end != ':' || !end[1] || !isfinite(line_y)) {
+            fprintf(stderr, "porelab collect: --line must be VALUE:LABEL with a finite number VALUE (got '%s')\n",
+                    txt->line);
+            return -1;
+        }
+        line_label = end + 1;
+    }
     int ri = find_col(t, rname, 0), pi = find_col(t, pname, 1);
     if (ri < 0 || pi < 0) {
         fprintf(stderr, "porelab collect: --chart %s: %s '%s' is not in the manifests; they have", spec,
@@ -367,6 +387,9 @@ static int write_chart(const table *t, const char *spec, const char *path, const
     double *mx[MAX_GROUPS] = {0}, *mm[MAX_GROUPS] = {0}, *lo[MAX_GROUPS] = {0}, *hi[MAX_GROUPS] = {0};
     char names[MAX_GROUPS][3][300];
     int total = 0;
+    /* at most PL_CHART_MAX_SERIES: 4 per group with the +-1 s.d. lines (up to 2 groups), 2 per
+       group without them (3-4 groups), and the reference line */
+    int with_sd = ngroups <= 2;
     for (int g = 0; g < ngroups; g++) {
         total += cnt[g];
         /* unique x values, mean and sample standard deviation at each */
@@ -396,13 +419,15 @@ static int write_chart(const table *t, const char *spec, const char *path, const
             if (k < min_count) min_count = k;
         }
         const char *gk = key[g][0] ? key[g] : "";
-        snprintf(names[g][0], sizeof names[g][0], "%s%smean of %d run%s per value", gk, gk[0] ? ": " : "", min_count,
+        snprintf(names[g][0], sizeof names[g][0], "%.255s%smean of %d run%s per value", gk, gk[0] ? ": " : "", min_count,
                  min_count == 1 ? "" : "s");
         snprintf(names[g][1], sizeof names[g][1], "mean \u00b1 1 s.d.");
         snprintf(names[g][2], sizeof names[g][2], "each run");
         ser[ns++] = (pl_chart_series){names[g][0], mx[g], mm[g], nu, PL_SERIES_LINE_POINTS, pal[g], 2};
-        ser[ns++] = (pl_chart_series){g == 0 ? names[g][1] : NULL, mx[g], lo[g], nu, PL_SERIES_DASHED, pal[g], 1};
-        ser[ns++] = (pl_chart_series){NULL, mx[g], hi[g], nu, PL_SERIES_DASHED, pal[g], 1};
+        if (with_sd) {
+            ser[ns++] = (pl_chart_series){g == 0 ? names[g][1] : NULL, mx[g], lo[g], nu, PL_SERIES_DASHED, pal[g], 1};
+            ser[ns++] = (pl_chart_series){NULL, mx[g], hi[g], nu, PL_SERIES_DASHED, pal[g], 1};
+        }
         pl_rgba light = pal[g];
         light.a = 0.6f;
         ser[ns++] = (pl_chart_series){g == 0 ? names[g][2] : NULL, xs[g], ys[g], cnt[g], PL_SERIES_POINTS, light, 1};
@@ -420,9 +445,18 @@ static int write_chart(const table *t, const char *spec, const char *path, const
                  t->cols[ri].unit[0] ? ")" : "");
         const char *sp = str_of(&t->runs[0], "scene.path"), *base = strrchr(sp, '/');
         snprintf(title, sizeof title, "%s: %s against %s, %d runs", base ? base + 1 : sp, rname, pname, total);
-        def.title = title_opt ? title_opt : title;
-        def.xlabel = xl;
-        def.ylabel = yl;
+        double y0 = INFINITY, y1 = -INFINITY;
+        for (int g = 0; g < ngroups; g++)
+            for (int i = 0; i < cnt[g]; i++) y0 = fmin(y0, ys[g][i]), y1 = fmax(y1, ys[g][i]);
+        double line_x[2] = {0, 0}, line_v[2] = {0, 0};
+        if (txt->line) {
+            y0 = fmin(y0, line_y), y1 = fmax(y1, line_y);
+            line_v[0] = line_v[1] = line_y;
+            ser[ns++] = (pl_chart_series){line_label, line_x, line_v, 2, PL_SERIES_DASHED, {0.35f, 0.35f, 0.35f, 1}, 1.5};
+        }
+        def.title = txt->title ? txt->title : title;
+        def.xlabel = txt->xlabel ? txt->xlabel : xl;
+        def.ylabel = txt->ylabel ? txt->ylabel : yl;
         def.series = ser;
         def.series_count = ns;
         def.legend = 2;
@@ -432,6 +466,11 @@ static int write_chart(const table *t, const char *spec, const char *path, const
         double pad = x1 > x0 ? 0.05 * (x1 - x0) : (x0 != 0 ? 0.05 * fabs(x0) : 1);
         def.xmin = x0 - pad;
         def.xmax = x1 + pad;
+        line_x[0] = def.xmin, line_x[1] = def.xmax;
+        /* 5 % below the data; above it room for the legend (top left), so it covers no point */
+        double span = y1 > y0 ? y1 - y0 : (y0 != 0 ? 0.1 * fabs(y0) : 1);
+        def.ymin = y0 - 0.05 * span;
+        def.ymax = y1 + 0.4 * span;
         char err[512];
         if (pl_chart_write(path, &def, err, sizeof err) != 0) {
             fprintf(stderr, "porelab collect: chart %s: %s\n", path, err);
@@ -485,7 +524,9 @@ int pl_cmd_collect(int argc, char **argv)
             if (colon) *colon = '\0';
             snprintf(chart, sizeof chart, "%s/%s_vs_%s.png", d, nm, colon ? colon + 1 : "");
         }
-        if (write_chart(&t, spec, chart, pl_opts_get(&o, "--title")) != 0) goto done;
+        chart_text txt = {pl_opts_get(&o, "--title"), pl_opts_get(&o, "--xlabel"), pl_opts_get(&o, "--ylabel"),
+                          pl_opts_get(&o, "--line")};
+        if (write_chart(&t, spec, chart, &txt) != 0) goto done;
     }
     rc = PL_EXIT_OK;
 done:

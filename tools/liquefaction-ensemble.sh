@@ -6,8 +6,8 @@
 #   through GNU parallel, then porelab collect.
 # Writes docs/data/liquefaction-ensemble.csv (one row per run), docs/figures/
 # liquefaction-ensemble.png (peak r_u against the amplitude: every run, mean, +-1 s.d.) and
-# docs/data/liquefaction-ensemble.md (the table docs/scaling.md shows, also pasted between its
-# markers). About 12 x 60 s of CPU on one core.
+# docs/data/liquefaction-ensemble.md (the table docs/scaling.md and docs/soil.md show, also pasted
+# between their markers). About 12 x 60 s of CPU on one core.
 #   tools/liquefaction-ensemble.sh                    (from the repository; build/app/porelab)
 #   PORELAB=path/to/porelab JOBS=2 SEEDS=0..5 tools/liquefaction-ensemble.sh
 # The runs go to out/liquefaction-ensemble/ (OUT=...); a re-run resumes: finished runs with the
@@ -29,7 +29,9 @@ mkdir -p docs/data docs/figures
 nice -n 10 "$exe" sweep scenes/soil/liquefaction.lua --grid "amp_mm=3.5,5" --seeds "$seeds" --run --jobs "$jobs" \
   --out "$out"
 "$exe" collect "$out" -o "$csv" --chart ru_peak:amp_mm --chart-out "$png" \
-  --title "Liquefaction: peak excess pore pressure ratio, loose saturated tank"
+  --title "Liquefaction: peak excess pore pressure ratio, loose saturated tank" \
+  --xlabel "shaking amplitude (mm)" --ylabel "peak r#du#u in the free field" \
+  --line "0.9:liquefied: r#du#u > 0.9"
 # paths in the CSV relative to the repository (the jobs ran with absolute ones)
 sed -i "s|$root/||g" "$csv"
 
@@ -65,10 +67,12 @@ awk -F, '
              a / 10, m, mu[1], sd[1], mu[2], sd[2], mu[3], sd[3], mu[4], sd[4], mu[5], sd[5], mu[6], sd[6], mu[7], sd[7], mu[8], sd[8]
     }
   }' "$csv" > "$md"
-# into docs/scaling.md between its markers
+# into docs/scaling.md and docs/soil.md between their markers
+for doc in docs/scaling.md docs/soil.md; do
 awk -v md="$md" '
   /<!-- liquefaction-ensemble:begin/ { print; while ((getline line < md) > 0) print line; skip = 1; next }
   /<!-- liquefaction-ensemble:end/ { skip = 0 }
-  !skip { print }' docs/scaling.md > docs/scaling.md.tmp && mv docs/scaling.md.tmp docs/scaling.md
+  !skip { print }' "$doc" > "$doc.tmp" && mv "$doc.tmp" "$doc"
+done
 cat "$md"
-echo "liquefaction-ensemble: wrote $csv, $png, $md and the table in docs/scaling.md"
+echo "liquefaction-ensemble: wrote $csv, $png, $md and the tables in docs/scaling.md and docs/soil.md"

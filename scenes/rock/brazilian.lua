@@ -11,25 +11,16 @@
 --   porelab run scenes/rock/brazilian.lua --param size=80 --param speed=0.025 --out out/brazilian_half
 local rock = require "porelab.rock"
 
-local P = porelab.params {
+local P = porelab.params(rock.with_strength_params {
   { name = "size", unit = "mm", value = 30, min = 15, max = 200, doc = "side of the box the discs are compacted in; the specimen diameter comes out about 3/4 of it" },
   { name = "speed", unit = "m/s", value = 0.05, min = 0.001, max = 2, doc = "top platen speed" },
-  { name = "kn", unit = "N/m", value = 2e10, min = 1e8, max = 1e12, doc = "bond and contact normal stiffness" },
-  { name = "kt_ratio", unit = "", value = 0.5, min = 0.05, max = 1, doc = "bond k_t / k_n" },
-  { name = "rn", unit = "N/m", value = 2.5e4, min = 1e2, max = 1e8, doc = "bond tensile strength R_n" },
-  { name = "rt_ratio", unit = "", value = 2, min = 0.25, max = 10, doc = "bond shear strength R_t / R_n" },
   { name = "disp_max", unit = "mm", value = 0.15, min = 0.005, max = 5, doc = "platen displacement at the end of the run" },
   { name = "seed", unit = "", value = 1, min = 1, max = 1000000, doc = "packing seed" },
-}
+})
 
 local S = P.size * 1e-3
 local w = porelab.world { gravity = { 0, 0 }, dt_safety = 0.2, local_damping = 0.7 }
-local granite = w:material { name = "granite", density = 2650, kn = P.kn, ks = P.kt_ratio * P.kn,
-                             friction = 0.5 }
-local steel = w:material { name = "steel", density = 7800, kn = P.kn, ks = P.kt_ratio * P.kn,
-                           friction = 0.5 }
-w:bond_law { a = granite, b = granite, law = "brittle", kn = P.kn, kt = P.kt_ratio * P.kn,
-             rn = P.rn, rt = P.rt_ratio * P.rn }
+local granite, steel = rock.lab_materials(w, P)
 
 local s = rock.specimen(w, { lo = { 0, 0 }, hi = { S, S }, material = granite, wall_material = steel,
                              seed = math.floor(P.seed), carve = 0.96 })

@@ -23,11 +23,9 @@ local P = porelab.params {
   { name = "length", unit = "mm", value = 90, min = 30, max = 300, doc = "length of the box the rock is compacted in" },
 }
 local w = porelab.world { gravity = { 0, 0 }, dt_safety = 0.2, local_damping = 0.7 } -- damped while the rock is made
-local granite = w:material { name = "granite", density = 2650, kn = 2e10, ks = 1e10, friction = 0.5 }
-local steel = w:material { name = "steel", density = 7800, kn = 2e10, ks = 1e10, friction = 0.5 }
+local granite, steel = rock.lab_materials(w)
 local tool_m = w:material { name = "tool", density = 7800, kn = 2e10, ks = 1e10, friction = 0.5 }
 w:pair(granite, tool_m, { friction = 0.4 })
-w:bond_law { a = granite, b = granite, law = "brittle", kn = 2e10, kt = 1e10, rn = 2.5e4, rt = 5e4 }
 w:bond_law { a = tool_m, b = tool_m, law = "brittle", kn = 2e10, kt = 1e10, rn = 1e7, rt = 1e7 }
 
 local L = P.length * 1e-3

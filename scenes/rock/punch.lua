@@ -16,10 +16,8 @@ local P = porelab.params {
 }
 local S = P.size * 1e-3
 local w = porelab.world { gravity = { 0, 0 }, dt_safety = 0.2, local_damping = 0.7 }
-local granite = w:material { name = "granite", density = 2650, kn = 2e10, ks = 1e10, friction = 0.5 }
-local steel = w:material { name = "steel", density = 7800, kn = 2e10, ks = 1e10, friction = 0.5 }
+local granite, steel = rock.lab_materials(w)
 w:pair(granite, steel, { friction = 0.1 }) -- smooth base and plates
-w:bond_law { a = granite, b = granite, law = "brittle", kn = 2e10, kt = 1e10, rn = 2.5e4, rt = 5e4 }
 
 local s = rock.specimen(w, { lo = { 0, 0 }, hi = { S, S }, material = granite, wall_material = steel })
 print("punch: specimen " .. s.report)

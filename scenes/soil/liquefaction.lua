@@ -339,12 +339,12 @@ return {
     end
     if #series > 0 then
       local t0, t1 = T_SHAKE + 1 / F, world:time()
-      series[#series + 1] = { name = "liquefied: r#du#d > 0.9", x = { t0, t1 }, y = { 0.9, 0.9 }, style = "dashed",
+      series[#series + 1] = { name = "liquefied: r#du#u > 0.9", x = { t0, t1 }, y = { 0.9, 0.9 }, style = "dashed",
                               color = "#444444", width = 1 }
       series[#series + 1] = { name = "shaking stops", x = { T_STOP, T_STOP }, y = { -1.5, 1.5 }, style = "dashed",
                               color = "#c00000", width = 1 }
       porelab.chart { file = "ru.png", title = "Excess pore pressure ratio in the free field",
-                      xlabel = "time (s)", ylabel = "r#du#d = #gDu / #gs'#dv0#u (mean over a period)",
+                      xlabel = "time (s)", ylabel = "r#du#u = #gDu / #gs'#dv0#u (mean over a period)",
                       series = series, legend = "bottom left" }
     end
     local fs, ss = world:fluid_stats(), world:soil_stats()

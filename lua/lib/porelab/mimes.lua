@@ -23,9 +23,7 @@ local porelab = require "porelab"
 
 local mimes = {}
 
-local function fail(fn, msg, ...)
-  porelab.error(string.format(fn .. ": " .. msg, ...))
-end
+local fail = require("porelab.check").for_module("")
 
 local function nums(fn, n, ...)
   local a = table.pack(...)

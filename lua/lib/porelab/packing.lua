@@ -9,27 +9,12 @@
 -- line of the scene that called it.
 local porelab = require "porelab"
 local random = require "porelab.random"
+local check = require "porelab.check"
 
 local packing = {}
 
--- porelab.error locates the message at the scene line that called the helper.
-local function fail(fn, msg, ...)
-  porelab.error(string.format("packing." .. fn .. ": " .. msg, ...))
-end
-
-local function check_fields(fn, def, valid)
-  if type(def) ~= "table" then fail(fn, "expected a table of fields (got %s)", type(def)) end
-  local ok = {}
-  for _, k in ipairs(valid) do ok[k] = true end
-  for k in pairs(def) do
-    if not ok[k] then
-      fail(fn, "unknown field '%s' (valid: %s)", tostring(k), table.concat(valid, ", "))
-    end
-  end
-end
-
--- finite numbers only: inf and nan pass "> 0" tests and turn into huge loops or nan positions
-local function finite(v) return type(v) == "number" and v == v and v > -math.huge and v < math.huge end
+local fail, check_fields = check.for_module("packing.")
+local finite = check.finite
 
 -- A region larger than this (m) is refused: no porelab scene needs one, and beyond it the
 -- rounding of positions exceeds any grain size that fits the lattice/body limit.

@@ -14,20 +14,7 @@ local packing = require "porelab.packing"
 
 local rock = {}
 
-local function fail(fn, msg, ...)
-  porelab.error(string.format("rock." .. fn .. ": " .. msg, ...))
-end
-
-local function check_fields(fn, def, valid)
-  if type(def) ~= "table" then fail(fn, "expected a table of fields (got %s)", type(def)) end
-  local ok = {}
-  for _, k in ipairs(valid) do ok[k] = true end
-  for k in pairs(def) do
-    if not ok[k] then
-      fail(fn, "unknown field '%s' (valid: %s)", tostring(k), table.concat(valid, ", "))
-    end
-  end
-end
+local fail, check_fields = require("porelab.check").for_module("rock.")
 
 local function length(b)
   local v = b:vertices()
@@ -61,6 +48,38 @@ local function compact(w, box, p, vmax, kn, max_steps, tol)
   end
   for _, s in ipairs(set) do s[1]:set_motion("fixed") end
   return steps, err
+end
+
+--- The strength parameters the laboratory scenes share (docs/rock.md, "Calibration"), appended
+-- to a scene's own porelab.params list: kn (bond and contact normal stiffness, N/m, default
+-- 2e10), kt_ratio (k_t / k_n, 0.5), rn (bond tensile strength R_n, N/m, 2.5e4) and rt_ratio
+-- (R_t / R_n, 2).
+--   local P = porelab.params(rock.with_strength_params { {name = "size", ...}, ... })
+function rock.with_strength_params(list)
+  local out = {}
+  for i, p in ipairs(list) do out[i] = p end
+  for _, p in ipairs {
+    { name = "kn", unit = "N/m", value = 2e10, min = 1e8, max = 1e12, doc = "bond and contact normal stiffness" },
+    { name = "kt_ratio", unit = "", value = 0.5, min = 0.05, max = 1, doc = "bond k_t / k_n" },
+    { name = "rn", unit = "N/m", value = 2.5e4, min = 1e2, max = 1e8, doc = "bond tensile strength R_n" },
+    { name = "rt_ratio", unit = "", value = 2, min = 0.25, max = 10, doc = "bond shear strength R_t / R_n" },
+  } do out[#out + 1] = p end
+  return out
+end
+
+--- The laboratory's materials: granite grains (2650 kg/m3) and steel platens (7800 kg/m3), both
+-- with normal stiffness S.kn, tangential S.kt_ratio x S.kn and friction 0.5, and the brittle
+-- granite-granite bond law (k_n, k_t as the contacts; R_n = S.rn, R_t = S.rt_ratio x S.rn).
+-- S holds the fields of rock.with_strength_params (a scene's P); without it, their defaults.
+-- Returns granite, steel.
+function rock.lab_materials(w, S)
+  S = S or { kn = 2e10, kt_ratio = 0.5, rn = 2.5e4, rt_ratio = 2 }
+  local kt = S.kt_ratio * S.kn
+  local granite = w:material { name = "granite", density = 2650, kn = S.kn, ks = kt, friction = 0.5 }
+  local steel = w:material { name = "steel", density = 7800, kn = S.kn, ks = kt, friction = 0.5 }
+  w:bond_law { a = granite, b = granite, law = "brittle", kn = S.kn, kt = kt, rn = S.rn,
+               rt = S.rt_ratio * S.rn }
+  return granite, steel
 end
 
 --- Steps until the kinetic energy is below `ratio` times the elastic energy (or max_steps).

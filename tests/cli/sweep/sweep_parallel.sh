@@ -10,6 +10,7 @@ exe=$1 scene=$2 dir=$3
 fail() { echo "FAIL: $*" >&2; exit 1; }
 command -v parallel > /dev/null || { echo "SKIP: GNU parallel (Debian package parallel) is not installed"; exit 77; }
 rm -rf "$dir"
+mkdir -p "$(dirname "$dir")"
 "$exe" sweep "$scene" --grid "amp=0.004,0.012" --grid "freq=4,8" --seeds 1..2 --until 0.8 \
   --out "$dir" --run --jobs 2 --slurm --snakemake > "$dir.log" 2>&1 || { cat "$dir.log"; fail "sweep --run"; }
 cat "$dir.log"
@@ -33,6 +34,14 @@ acc=$(grep '^job_0007,' "$csv" | cut -d, -f8)
 awk -v a="$acc" 'BEGIN { e = 0.012 * (2 * 3.141592653589793 * 8) ^ 2 / 9.81; exit !(a - e < 1e-9 && e - a < 1e-9) }' ||
   fail "peak_accel_g $acc"
 [ -s "$dir/nut_rise_mm_vs_amp.png" ] || fail "chart"
+# the chart's own labels and a reference line; a malformed line is refused by name
+"$exe" collect "$dir" -o "$dir/labelled.csv" --chart nut_rise_mm:amp --chart-out "$dir/labelled.svg" \
+  --xlabel "shaking amplitude A (m)" --ylabel "nut rise (mm)" --line "5:5 mm rise" || fail "collect --line"
+# PLplot's svg device writes each character as an entity: decode (perl-base is in every Debian)
+txt=$(perl -CS -pe 's/&#x([0-9a-f]+);/chr(hex($1))/ge' "$dir/labelled.svg")
+grep -q "shaking amplitude A (m)" <<< "$txt" && grep -q "5 mm rise" <<< "$txt" || fail "labels in the svg"
+"$exe" collect "$dir" -o "$dir/bad.csv" --chart nut_rise_mm:amp --line "five:limit" 2> "$dir.errline" && fail "--line five ran"
+grep -q "\-\-line must be VALUE:LABEL with a finite number VALUE (got 'five:limit')" "$dir.errline" || { cat "$dir.errline"; fail "--line message"; }
 # resumable: nothing left to run
 "$exe" sweep "$scene" --grid "amp=0.004,0.012" --grid "freq=4,8" --seeds 1..2 --until 0.8 --out "$dir" --run \
   --jobs 2 > "$dir.log2" 2>&1 || fail "second sweep"
