@@ -41,7 +41,7 @@ void pl_report_materials(FILE *f, const pl_world *w)
         if (m.kn > 0)
             fprintf(f, "kn %g N/m; ", m.kn);
         else
-            fprintf(f, "kn from young %g Pa (seed 003 eq. 2.36, overlap %g R); ", m.young,
+            fprintf(f, "kn from young %g Pa (Tan 1990 eq. 2.36, overlap %g R); ", m.young,
                     m.young_overlap);
         if (m.ks >= 0)
             fprintf(f, "ks %g N/m; ", m.ks);
@@ -66,17 +66,17 @@ void pl_report_contact_law(FILE *f, const pl_world *w)
     }
     fprintf(f, LABEL "Cundall-Strack for discs and walls: linear normal spring, incremental "
                      "shear spring\n" LABEL "with the Coulomb limit, normal and shear dashpots "
-                     "(seed 003 §2.2.4)\n",
+                     "(Tan 1990 §2.2.4)\n",
             "contact law", "");
     if (polygons)
-        fprintf(f, LABEL "polygons: area-based normal force F = Y A / l_char (seed 004 §3)\n",
+        fprintf(f, LABEL "polygons: area-based normal force F = Y A / l_char (Mueller et al. 2020 §3)\n",
                 "");
 }
 
 void pl_report_damping(FILE *f, const pl_world *w)
 {
-    fprintf(f, LABEL "global C = %g N s/m, C* = %g N m s (seed 003 eqs. 2.21-2.22); "
-                     "Rayleigh alpha = %g 1/s (seed 000 eq. 2.5); local %g\n",
+    fprintf(f, LABEL "global C = %g N s/m, C* = %g N m s (Tan 1990 eqs. 2.21-2.22); "
+                     "Rayleigh alpha = %g 1/s (Klosek 1997 eq. 2.5); local %g\n",
             "damping", flag_value(w, "GLOBAL_DAMPING"), flag_value(w, "GLOBAL_DAMPING_ROT"),
             flag_value(w, "RAYLEIGH_FACTOR"), flag_value(w, "LOCAL_DAMPING"));
     fprintf(f, LABEL "(%g, %g) m/s^2\n", "gravity", flag_value(w, "GRAVITY_X"),

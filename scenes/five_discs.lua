@@ -1,7 +1,7 @@
--- Seed 003 (Tan 1990) §2.2.5.2, Table 2.2: five frictionless discs (R = 1 m,
+-- Tan (1990) §2.2.5.2, Table 2.2: five frictionless discs (R = 1 m,
 -- m = 7539.823 kg) settle under g = 10 m/s^2 between a floor (wall 1) and two side walls
 -- (walls 2 and 3). k_N = 1e7 N/m, c_N = 1e5 N s/m, global C = 4.5e5 N s/m, 5 s.
--- Written with the MIMES flags of seed 000 (GRAVITY_Y, GLOBAL_DAMPING, TIMESTEPS, PRINT_INT).
+-- Written with the MIMES flags of Klosek (1997) (GRAVITY_Y, GLOBAL_DAMPING, TIMESTEPS, PRINT_INT).
 -- Geometry reconstructed from the table: discs 1, 2 on the floor against the side walls,
 -- disc 3 on top of them, discs 4, 5 against the walls on top of disc 3; every line of
 -- centres makes 41.4 degrees with the horizontal (dx = 1.5 m, dy = sqrt(1.75) m).
@@ -43,15 +43,16 @@ local function key(c)
   return a .. "-" .. b
 end
 
--- The picture is seed 003's Fig. 2.13(a): force chains between the centres (width
+-- The picture is Tan's Fig. 2.13(a): force chains between the centres (width
 -- proportional to the normal force, 200 kN at full width) and, at each contact, the computed
--- normal force beside the rigid-disc value of Table 2.2 in parentheses, kN
+-- normal force beside the rigid-disc value of Table 2.2 in parentheses, kN; a wall's contact
+-- force is labelled outside that wall, clear of the wall line and the discs
 --   porelab still scenes/five_discs.lua --at 5 -o five.png   (tools/figures.sh)
 return {
   world = w,
   render = {
-    size = { 760, 820 },
-    camera = { -3.2, -0.9, 3.2, 6.2 },
+    size = { 860, 780 },
+    camera = { -4.3, -1.1, 4.3, 6.2 },
     force_scale = 2e5,
     force_max_width = 16,
     force_threshold = 0,
@@ -60,7 +61,7 @@ return {
     colors = { rock = "#d9cbb0" },
     overlay = function(world)
       local items = {
-        { text = "wall 1", at = { 0, -0.35 }, anchor = "center", size = 15 },
+        { text = "wall 1", at = { 0, -0.75 }, anchor = "center", size = 15 },
         { text = "wall 2", at = { -2.65, 5.6 }, anchor = "right", size = 15 },
         { text = "wall 3", at = { 2.65, 5.6 }, anchor = "left", size = 15 },
         { text = "computed (rigid discs, Tan 1990 Table 2.2)", at = { 0, 5.75 },
@@ -75,8 +76,15 @@ return {
         local ref = theory[key(c)]
         local label = string.format("%.1f", c.fn / 1000)
         if ref then label = label .. string.format(" (%.1f)", ref / 1000) end
-        items[#items + 1] = { text = label, at = { c.point[1] or c.point.x, c.point[2] or c.point.y },
-                              anchor = "center", size = 15, color = "#7a1010" }
+        local x, y = c.point[1] or c.point.x, c.point[2] or c.point.y
+        local k = key(c)
+        local anchor = "center"
+        if k:find("w1", 1, true) then y = y - 0.3                        -- below the floor
+        elseif k:find("w2", 1, true) then x, anchor = x - 0.12, "right"  -- left of wall 2
+        elseif k:find("w3", 1, true) then x, anchor = x + 0.12, "left"   -- right of wall 3
+        end
+        items[#items + 1] = { text = label, at = { x, y }, anchor = anchor, size = 15,
+                              color = "#7a1010" }
       end
       return items
     end,

@@ -206,7 +206,12 @@ void pl_draw_isolines(pl_draw_list *dl, const pl_isolines *iso, const pl_isoline
                                 (at.x - hw > dl->clip.x0 && at.x + hw < dl->clip.x1 &&
                                  at.y - hw > dl->clip.y0 && at.y + hw < dl->clip.y1);
                             if (!inside_clip || pl_obstacles_hit(avoid, box, 2.0, l)) break;
-                            pl_obstacles_add_box(avoid, box);
+                            /* later labels keep a clear gap of 1.2 label sizes from this
+                             * one, so labels of close lines do not pile up side by side */
+                            pl_label_box keep = box;
+                            keep.hw += 1.2 * st->label_size;
+                            keep.hh += 1.2 * st->label_size;
+                            pl_obstacles_add_box(avoid, keep);
                         }
                         pl_dl_text(dl, PL_SPACE_PIXEL, at, txt, st->label_size,
                                    PL_ANCHOR_CENTER | PL_ANCHOR_MIDDLE, (float)ang, st->color,

@@ -364,42 +364,8 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
                               own ? s->mesh_tri_count : nt, c, 0.6f))
             dl->failed = 1;
     }
-    if (layers & PL_LAYER_ISOLINES) {
-        dl->current_layer = 5;
-        double levels[64], step = 0.0;
-        int count = opt->isoline_count > 0 ? opt->isoline_count : 10;
-        if (count > 60) count = 60;
-        /* levels chosen in display units so labels are round numbers */
-        int nl = pl_nice_levels(vmin * uf, vmax * uf, count, levels, 64, &step);
-        for (int i = 0; i < nl; i++) levels[i] /= uf;
-        pl_isolines iso;
-        pl_isolines_init(&iso);
-        if (pl_isolines_extract(nodes, s->fluid_node_count, tris, nt, s->fluid_values, levels, nl,
-                                &iso) == 0) {
-            /* labels in display units, with the unit ("2 kPa") */
-            for (int l = 0; l < iso.line_count; l++) iso.levels[l] *= uf;
-            pl_isoline_style st = pl_default_isoline_style();
-            float fs = pl_render_font_size(dl->camera.width, dl->camera.height);
-            st.label_size = fmaxf(10.5f, 0.85f * fs);
-            char fmt[32];
-            const char *open = strrchr(label, '('), *close = strrchr(label, ')');
-            if (open && close && close > open + 1 && close - open < 12)
-                snprintf(fmt, sizeof fmt, "%%g %.*s", (int)(close - open - 1), open + 1);
-            else
-                snprintf(fmt, sizeof fmt, "%%g");
-            st.label_format = fmt;
-            pl_obstacles avoid;
-            pl_obstacles_init(&avoid);
-            pl_fluid_label_obstacles(&avoid, dl, s, opt);
-            st.avoid = &avoid;
-            pl_draw_isolines(dl, &iso, &st);
-            if (avoid.failed) dl->failed = 1;
-            pl_obstacles_free(&avoid);
-        } else {
-            dl->failed = 1;
-        }
-        pl_isolines_free(&iso);
-    }
+    /* velocity arrows before the isolines, so that isoline labels (white boxes) lie on top of
+     * the arrows rather than under them */
     double vscale = 0.0;
     if (layers & PL_LAYER_VELOCITY) {
         dl->current_layer = 6;
@@ -459,6 +425,42 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
             free(at);
             free(vv);
         }
+    }
+    if (layers & PL_LAYER_ISOLINES) {
+        dl->current_layer = 5;
+        double levels[64], step = 0.0;
+        int count = opt->isoline_count > 0 ? opt->isoline_count : 10;
+        if (count > 60) count = 60;
+        /* levels chosen in display units so labels are round numbers */
+        int nl = pl_nice_levels(vmin * uf, vmax * uf, count, levels, 64, &step);
+        for (int i = 0; i < nl; i++) levels[i] /= uf;
+        pl_isolines iso;
+        pl_isolines_init(&iso);
+        if (pl_isolines_extract(nodes, s->fluid_node_count, tris, nt, s->fluid_values, levels, nl,
+                                &iso) == 0) {
+            /* labels in display units, with the unit ("2 kPa") */
+            for (int l = 0; l < iso.line_count; l++) iso.levels[l] *= uf;
+            pl_isoline_style st = pl_default_isoline_style();
+            float fs = pl_render_font_size(dl->camera.width, dl->camera.height);
+            st.label_size = fmaxf(10.5f, 0.85f * fs);
+            char fmt[32];
+            const char *open = strrchr(label, '('), *close = strrchr(label, ')');
+            if (open && close && close > open + 1 && close - open < 12)
+                snprintf(fmt, sizeof fmt, "%%g %.*s", (int)(close - open - 1), open + 1);
+            else
+                snprintf(fmt, sizeof fmt, "%%g");
+            st.label_format = fmt;
+            pl_obstacles avoid;
+            pl_obstacles_init(&avoid);
+            pl_fluid_label_obstacles(&avoid, dl, s, opt);
+            st.avoid = &avoid;
+            pl_draw_isolines(dl, &iso, &st);
+            if (avoid.failed) dl->failed = 1;
+            pl_obstacles_free(&avoid);
+        } else {
+            dl->failed = 1;
+        }
+        pl_isolines_free(&iso);
     }
     return vscale;
 }

@@ -282,6 +282,9 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     else
         dl->camera = pl_camera_fit(opt->view_lo, opt->view_hi, W_img, H, area, 0.0);
     dl->clip = area;
+    /* walls that run out of a scene's view at its top end a little below the title band, so
+     * the time stamp and title never sit on a wall line */
+    if (top_h > 0.0) dl->clip.y0 += 0.5 * fs;
     dl->has_clip = 1;
 
     /* Scene layers, back to front: fluid field and mesh, bodies, isolines and velocity

@@ -44,5 +44,5 @@ set("EXODUSOUTPUTSTEP", 1)
 set("EXODUSWRITEFILE", "dam-flow.exe")
 apply_mines_params()
 
-return M.scene { render = { title = "MIMES dam flow (seed 000 §4.1)",
+return M.scene { render = { title = "Flow under a dam: pore pressure and Darcy velocity (Klosek 1997, §4.1)",
                             layers = "bodies,mesh,pressure,isolines,velocity,colorbar,title" } }

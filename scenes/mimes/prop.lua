@@ -43,5 +43,5 @@ set("FLUID_GEOMETRY_FILENAME", "geometry.flu")
 set("FLUID_PRESSURES_FILENAME", "pressures.flu")
 apply_mines_params()
 
-return M.scene { render = { title = "MIMES pressure wave (seed 000 §4.3)",
+return M.scene { render = { title = "A pressure wave diffusing into a fluid column (Klosek 1997, §4.3)",
                             layers = "bodies,mesh,pressure,isolines,colorbar,title,time" } }

@@ -94,7 +94,7 @@ return {
              fluid_field = "speed", fluid_range = { 0, 0.3 }, velocity_scale = 0.02,
              time_offset = -t0,
              colors = { grain = "#e3cfa6", box = "#3a3a3a" },
-             title = "Granular step collapsing in water (seed 004 §6.3): speed, velocity, mesh" },
+             title = "Granular step collapsing in water (after Mueller et al. 2020, §6.3): speed, velocity, mesh" },
   on_frame = function(world, frame) record(world) end,
   on_finish = function(world)
     csv:close()
