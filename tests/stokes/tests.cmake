@@ -15,6 +15,10 @@ pl_add_c_test(test_stokes_array SOURCES ${PL_TEST_DIR}/stokes/test_stokes_array.
 # table in docs/stokes.md): the same program, second group.
 add_test(NAME test_stokes_held COMMAND test_stokes_world held)
 set_tests_properties(test_stokes_held PROPERTIES LABELS "stokes;fluid" TIMEOUT 120)
+# A chosen container (container = {walls}): the same answer as every wall for one box, a box
+# chosen in a world of two, the sheared simple-shear box's closure.
+add_test(NAME test_stokes_container COMMAND test_stokes_world container)
+set_tests_properties(test_stokes_container PROPERTIES LABELS "stokes;fluid" TIMEOUT 120)
 # The Lua API: every bad argument of w:stokes{...} names file, line, argument and range; the
 # queries (tests/stokes/lua_api.lua).
 if(TARGET porelab)
