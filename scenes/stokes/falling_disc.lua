@@ -45,7 +45,7 @@ return {
       print(string.format("terminal velocity %.4f cm/s; Faxen %.4f (%+.2f %%); Takaisi (seed eq. 5.1) %.4f (%+.2f %%); "
                           .. "Tan 0.9306; K = %.2f N s/m^2, stable step %.2e s", 100 * v, 100 * W / K_faxen,
                           100 * (v * K_faxen / W - 1), 100 * W / K_takaisi, 100 * (v * K_takaisi / W - 1), r.k, r.dt_safe))
-      porelab.chart { file = "falling_disc_velocity.png", title = "Disc falling between walls (seed 003, 5.1)",
+      porelab.chart { file = "falling_disc_velocity.png", title = "Disc falling between walls (Tan 1990, 5.1)",
                       xlabel = "time (s)", ylabel = "fall velocity (cm/s)",
                       series = { { name = "boundary elements", x = ts, y = vs, style = "points" },
                                  { name = "m dv/dt = W' - K v, K from Faxen", x = ts, y = vf, style = "dashed",

@@ -97,7 +97,7 @@ return {
              layers = "bodies,forces,pressure,velocity,colorbar,title,time,overlay", fluid_field = "pressure",
              fluid_range = { 0, 360e3 }, velocity_scale = 3, time_offset = -T0,
              colors = { grain = "#e3b96b" },
-             title = "Artificial liquefaction under a held load (seed 003 \u{00A7}5.3)",
+             title = "Artificial liquefaction under a held load (Tan 1990, \u{00A7}5.3)",
              overlay = label },
   on_frame = function(world)
     if world:time() > T0 then
@@ -115,7 +115,7 @@ return {
                         .. "applied %.1f kPa, contacts on the top wall %.1f kPa; contacts gone at gamma = %s",
                         hist.g[n], hist.ptop[n], hist.pbot[n], hist.applied[n], hist.contact[n],
                         first and string.format("%.2f %%", first) or "(not within the run)"))
-    porelab.chart { file = "liquefaction_pressure.png", title = "Artificial liquefaction (seed 003, 5.3, Fig. 5.14)",
+    porelab.chart { file = "liquefaction_pressure.png", title = "Artificial liquefaction (Tan 1990, 5.3, Fig. 5.14)",
                     xlabel = "shear strain (%)", ylabel = "stress on the walls (kPa)",
                     series = { { name = "applied stress F/L", x = hist.g, y = hist.applied, style = "dashed", color = "#222222" },
                                { name = "pore pressure, top wall", x = hist.g, y = hist.ptop, color = "#1f4e9c" },

@@ -90,7 +90,7 @@ return {
              layers = "bodies,pressure,velocity,colorbar,title,time,overlay", fluid_field = "excess_pressure",
              fluid_range = { -30, 30 }, velocity_scale = 0.3,
              colors = { disc = "#e3b96b" },
-             title = "Three discs sedimenting in a viscous liquid (Stokes flow, seed 003 \u{00A7}5.2)",
+             title = "Three discs sedimenting in a viscous liquid (Stokes flow, Tan 1990 \u{00A7}5.2)",
              overlay = panel },
   on_frame = function(world) record(world) end,
   on_finish = function(world)
@@ -111,7 +111,7 @@ return {
       xt[k] = { name = string.format("disc %d", k), x = hist.t, y = xs, color = COLORS[k] }
       yt[k] = { name = string.format("disc %d", k), x = hist.t, y = hist.vy[k], color = COLORS[k] }
     end
-    porelab.chart { file = "three_discs_trajectories.png", title = "Three sedimenting discs: trajectories (seed 003, 5.2)",
+    porelab.chart { file = "three_discs_trajectories.png", title = "Three sedimenting discs: trajectories (Tan 1990, 5.2)",
                     xlabel = "x (cm; horizontal scale exaggerated)", ylabel = "height y (m)", series = tr,
                     legend = "bottom right" }
     porelab.chart { file = "three_discs_x.png", title = "Three sedimenting discs: horizontal position",

@@ -4,7 +4,7 @@ pl_add_c_test(test_stokes_kernels SOURCES ${PL_TEST_DIR}/stokes/test_stokes_kern
 pl_add_c_test(test_stokes_world SOURCES ${PL_TEST_DIR}/stokes/test_stokes_world.c LABEL "stokes;fluid" TIMEOUT 300)
 # Scenes in scenes/stokes/ run a short while without error (porelab, when built).
 if(TARGET porelab)
-  foreach(scene falling_disc three_discs liquefaction)
+  foreach(scene falling_disc three_discs liquefaction simple_shear)
     add_test(NAME stokes_scene_${scene} COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/stokes/${scene}.lua -q
              --steps 6 --every 3 --out ${CMAKE_CURRENT_BINARY_DIR}/stokes-out/${scene})
     set_tests_properties(stokes_scene_${scene} PROPERTIES LABELS "stokes;fluid" TIMEOUT 120)
