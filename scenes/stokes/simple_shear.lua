@@ -106,7 +106,7 @@ print(string.format("simple_shear (resolved fluid): compressed in %.3f s to %.2f
 
 -- 2. the pore water in the left box: it holds the top wall's force (the unbalanced part)
 w:stokes { viscosity = 1e-3, density = 1000, gap = GAP, disc_elements = 16, element_length = 0.3 * mm,
-           field_grid = 50, solve_every = 250, container = { sat.bottom, sat.right, sat.top, sat.left },
+           field_grid = 50, solve_every = 100, container = { sat.bottom, sat.right, sat.top, sat.left },
            load_wall = sat.top, load_force = sat.FA, load_contacts = 1 }
 
 -- 3. shear: the top walls slide at RATE H, the side walls turn about their feet
