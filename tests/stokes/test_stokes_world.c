@@ -11,6 +11,16 @@
 
 #define PI 3.14159265358979323846
 
+static int add_wall(pl_world *w, pl_vec2 a, pl_vec2 b) {
+    pl_body_def d = pl_default_body_def();
+    d.shape = PL_SHAPE_SEGMENT;
+    d.motion = PL_MOTION_FIXED;
+    d.material = 0;
+    d.a = a;
+    d.b = b;
+    return pl_world_add_body(w, &d);
+}
+
 /* World with a closed box [x0, x1] x [y0, y1] of four fixed walls (bodies 0..3: bottom, right,
    top, left), walls overlapping at the corners as scenes build them. */
 static pl_world *box_world(double x0, double x1, double y0, double y1, double g, double dt, double density) {
@@ -33,15 +43,7 @@ static pl_world *box_world(double x0, double x1, double y0, double y1, double g,
                                {{x1, y0 - e}, {x1, y1 + e}},
                                {{x1 + e, y1}, {x0 - e, y1}},
                                {{x0, y1 + e}, {x0, y0 - e}}};
-    for (int k = 0; k < 4; k++) {
-        pl_body_def b = pl_default_body_def();
-        b.shape = PL_SHAPE_SEGMENT;
-        b.motion = PL_MOTION_FIXED;
-        b.material = 0;
-        b.a = seg[k][0];
-        b.b = seg[k][1];
-        pl_world_add_body(w, &b);
-    }
+    for (int k = 0; k < 4; k++) add_wall(w, seg[k][0], seg[k][1]);
     return w;
 }
 
@@ -400,16 +402,6 @@ static int gap_study(void) {
         ENSURE_REL(K, Kf, 0.01);
     }
     return 0;
-}
-
-static int add_wall(pl_world *w, pl_vec2 a, pl_vec2 b) {
-    pl_body_def d = pl_default_body_def();
-    d.shape = PL_SHAPE_SEGMENT;
-    d.motion = PL_MOTION_FIXED;
-    d.material = 0;
-    d.a = a;
-    d.b = b;
-    return pl_world_add_body(w, &d);
 }
 
 /* A chosen container (pl_stokes_def.container). 1. The §5.1 disc box with three discs: the
