@@ -1,7 +1,8 @@
 /* The boundary-element Stokes fluid (porelab/stokes.h) as world methods:
  *     w:stokes{ viscosity = , density = , disc_elements = , wall_elements = , element_length = ,
  *               polygon_elements = , gap = , solve_every = , check_stability = , field_grid = ,
- *               load_wall = <wall body or index>, load_force = }
+ *               load_wall = <wall body or index>, load_force = , load_contacts = ,
+ *               container = {<wall bodies or indices>} }
  *                                   attaches the fluid (or changes its fields); returns the def
  *     w:stokes()                    -> the def as a table
  *     w:stokes_solve()              solves for the bodies as they are (no time step)
@@ -35,18 +36,63 @@ static int s_stokes(lua_State *L) {
             lua_pushinteger(L, wall);
             lua_setfield(L, 2, "load_wall");
         }
+        /* container: a list of wall bodies (or indices); {} for every wall of the world */
+        const int has_box = lua_getfield(L, 2, "container") != LUA_TNIL;
+        if (has_box) {
+            if (!lua_istable(L, -1))
+                pl_lua_error(L, "%s: container must be a list of 3 to %d wall bodies (got %s)", fn,
+                             PL_STOKES_CONTAINER_MAX, luaL_typename(L, -1));
+            const lua_Integer n = (lua_Integer)lua_rawlen(L, -1);
+            if (n != 0 && (n < 3 || n > PL_STOKES_CONTAINER_MAX))
+                pl_lua_error(L, "%s: container must list 3 to %d wall bodies (got %d); {} for every wall", fn,
+                             PL_STOKES_CONTAINER_MAX, (int)n);
+            d.container_count = (int)n;
+            for (int k = 0; k < (int)n; k++) {
+                lua_rawgeti(L, -1, k + 1);
+                int b = -1;
+                if (lua_isuserdata(L, -1)) {
+                    pl_world *bw = NULL;
+                    b = pl_lua_check_body(L, -1, &bw);
+                    if (bw != lw->w) pl_lua_error(L, "%s: container[%d] is a body of another world", fn, k + 1);
+                } else if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 0 && lua_tointeger(L, -1) < 1000000000) {
+                    b = (int)lua_tointeger(L, -1);
+                } else {
+                    pl_lua_error(L, "%s: container[%d] must be a wall body or its index in [0, 1e9) (got %s)", fn,
+                                 k + 1, luaL_tolstring(L, -1, NULL));
+                }
+                d.container[k] = b;
+                lua_pop(L, 1);
+            }
+            for (int k = (int)n; k < PL_STOKES_CONTAINER_MAX; k++) d.container[k] = 0;
+        }
+        const int box_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+        if (has_box) {
+            lua_pushnil(L);
+            lua_setfield(L, 2, "container");
+        }
         pl_lua_read_params(L, 2, fn, pl_stokes_params, PL_STOKES_PARAM_COUNT, &d);
         if (wall >= -1) { /* give the scene its table back as it wrote it */
             lua_rawgeti(L, LUA_REGISTRYINDEX, wall_ref);
             lua_setfield(L, 2, "load_wall");
         }
+        if (has_box) {
+            lua_rawgeti(L, LUA_REGISTRYINDEX, box_ref);
+            lua_setfield(L, 2, "container");
+        }
         luaL_unref(L, LUA_REGISTRYINDEX, wall_ref);
+        luaL_unref(L, LUA_REGISTRYINDEX, box_ref);
         pl_lua_check_status(L, lw->w, has ? pl_world_stokes_redefine(lw->w, &d) : pl_world_attach_stokes(lw->w, &d),
                             fn);
     } else if (!has) {
         pl_lua_check_status(L, lw->w, pl_world_attach_stokes(lw->w, &d), fn);
     }
     pl_lua_push_params(L, pl_stokes_params, PL_STOKES_PARAM_COUNT, &d);
+    lua_createtable(L, d.container_count, 0);
+    for (int k = 0; k < d.container_count; k++) {
+        lua_pushinteger(L, d.container[k]);
+        lua_rawseti(L, -2, k + 1);
+    }
+    lua_setfield(L, -2, "container");
     return 1;
 }
 

@@ -280,6 +280,10 @@ int main(int argc, char **argv) {
             dd.density = 1;
             dd.viscosity = 50;
             dd.perm_mode = 1;
+            /* start from the static (hydrostatic) field: from zero pressure the water column
+               first drains downwards through the grain and drags it faster than free fall
+               (32 cm/s after 0.03 s instead of 14.7) */
+            dd.first_step_static = 1;
             if (st == PL_OK) st = pl_world_set_darcy(w, &dd);
             if (st == PL_OK) pl_world_add_fluid_bc(w, (pl_vec2){-2.5, 20}, (pl_vec2){2.5, 20}, 0);
         }

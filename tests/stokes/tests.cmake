@@ -4,7 +4,7 @@ pl_add_c_test(test_stokes_kernels SOURCES ${PL_TEST_DIR}/stokes/test_stokes_kern
 pl_add_c_test(test_stokes_world SOURCES ${PL_TEST_DIR}/stokes/test_stokes_world.c LABEL "stokes;fluid" TIMEOUT 300)
 # Scenes in scenes/stokes/ run a short while without error (porelab, when built).
 if(TARGET porelab)
-  foreach(scene falling_disc three_discs liquefaction)
+  foreach(scene falling_disc three_discs liquefaction simple_shear)
     add_test(NAME stokes_scene_${scene} COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/stokes/${scene}.lua -q
              --steps 6 --every 3 --out ${CMAKE_CURRENT_BINARY_DIR}/stokes-out/${scene})
     set_tests_properties(stokes_scene_${scene} PROPERTIES LABELS "stokes;fluid" TIMEOUT 120)
@@ -15,6 +15,10 @@ pl_add_c_test(test_stokes_array SOURCES ${PL_TEST_DIR}/stokes/test_stokes_array.
 # table in docs/stokes.md): the same program, second group.
 add_test(NAME test_stokes_held COMMAND test_stokes_world held)
 set_tests_properties(test_stokes_held PROPERTIES LABELS "stokes;fluid" TIMEOUT 120)
+# A chosen container (container = {walls}): the same answer as every wall for one box, a box
+# chosen in a world of two, the sheared simple-shear box's closure.
+add_test(NAME test_stokes_container COMMAND test_stokes_world container)
+set_tests_properties(test_stokes_container PROPERTIES LABELS "stokes;fluid" TIMEOUT 120)
 # The Lua API: every bad argument of w:stokes{...} names file, line, argument and range; the
 # queries (tests/stokes/lua_api.lua).
 if(TARGET porelab)

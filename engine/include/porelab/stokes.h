@@ -1,8 +1,8 @@
 /// Resolved Stokes flow between the grains by boundary elements (seed 003, Tan 1990, ch. 4;
 /// docs/stokes.md).
 ///
-/// The fluid fills the container (the world's wall segments, chained into a convex polygon,
-/// counter-clockwise) minus the dynamic discs and convex polygons (clockwise). Each step that is
+/// The fluid fills the container (the world's wall segments, or the ones listed in
+/// pl_stokes_def.container, chained into a convex polygon, counter-clockwise) minus the dynamic discs and convex polygons (clockwise). Each step that is
 /// due, the model solves quasi-steady Stokes flow (mu lap u = grad p, div u = 0) with the
 /// boundary integral equation (seed eqs. 4.37, 4.40 and 4.43)
 ///
@@ -65,7 +65,16 @@ typedef struct pl_stokes_def {
                            ///< carry: traction from load_force minus the grains' contact force
                            ///< on the wall in the last step (seed 003 §5.3.2, the unbalanced
                            ///< force); 0: all of load_force. Default 0
+    int container_count;   ///< 0: the container is every wall segment of the world (default);
+                           ///< 3..PL_STOKES_CONTAINER_MAX: only the wall bodies listed in
+                           ///< container[] bound the fluid, and only the particles whose centre
+                           ///< lies inside them are in it (the others get no drag and no
+                           ///< buoyancy). Lets a world hold several boxes, one of them saturated
+    int container[8];      ///< body indices of the container's walls (distinct), in any order
 } pl_stokes_def;
+
+/// Most walls a chosen container (pl_stokes_def.container) may list.
+#define PL_STOKES_CONTAINER_MAX 8
 
 #define PL_STOKES_PARAM_COUNT 13
 /// The parameter table of pl_stokes_def (Lua names as the fields; no MIMES flags).

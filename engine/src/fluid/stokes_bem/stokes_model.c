@@ -75,7 +75,55 @@ static pl_status check_def(pl_world *w, const pl_stokes_def *d) {
     if (!d) return pl__world_error(w, PL_ERR_ARG, "stokes: no def given (use pl_default_stokes_def())");
     if (pl_params_check_all(pl_stokes_params, pl_stokes_param_count, d, "stokes", msg, sizeof msg) != PL_OK)
         return pl__world_error(w, PL_ERR_ARG, "%s", msg);
+    if (d->container_count != 0 && (d->container_count < 3 || d->container_count > PL_STOKES_CONTAINER_MAX))
+        return pl__world_error(w, PL_ERR_ARG,
+                               "stokes: container must list 3 to %d walls (got %d); leave it out to use every wall",
+                               PL_STOKES_CONTAINER_MAX, d->container_count);
+    for (int k = 0; k < d->container_count; k++) {
+        if (d->container[k] < 0)
+            return pl__world_error(w, PL_ERR_ARG, "stokes: container wall %d is not a body index (got %d)", k + 1,
+                                   d->container[k]);
+        for (int j = 0; j < k; j++)
+            if (d->container[j] == d->container[k])
+                return pl__world_error(w, PL_ERR_ARG, "stokes: container lists wall %d twice", d->container[k]);
+    }
     return PL_OK;
+}
+
+/* 1 when body i is one of the container's walls: every segment, or the chosen ones. */
+static int is_side(const pl_stokes_def *d, const pl_grain_view *g, int i) {
+    if (g->shape[i] != PL_SHAPE_SEGMENT) return 0;
+    if (d->container_count == 0) return 1;
+    for (int k = 0; k < d->container_count; k++)
+        if (d->container[k] == i) return 1;
+    return 0;
+}
+
+/* 1 when the point c lies in the fluid's container as far as choosing particles goes: always
+   without a chosen container; with one, strictly on the inner side of every chosen wall's
+   line (the container is convex; the inner side is that of the walls' mean midpoint). */
+static int in_container(const pl_stokes_def *d, const pl_grain_view *g, pl_vec2 c) {
+    if (d->container_count == 0) return 1;
+    pl_vec2 cen = {0, 0};
+    int n = 0;
+    for (int k = 0; k < d->container_count; k++) {
+        const int i = d->container[k];
+        if (i >= g->n || g->shape[i] != PL_SHAPE_SEGMENT) return 0;
+        const pl_vec2 *v = g->verts + g->vert_offset[i];
+        cen.x += 0.5 * (v[0].x + v[1].x);
+        cen.y += 0.5 * (v[0].y + v[1].y);
+        n++;
+    }
+    cen.x /= n;
+    cen.y /= n;
+    for (int k = 0; k < d->container_count; k++) {
+        const pl_vec2 *v = g->verts + g->vert_offset[d->container[k]];
+        const pl_vec2 t = {v[1].x - v[0].x, v[1].y - v[0].y};
+        const double sc = t.x * (c.y - v[0].y) - t.y * (c.x - v[0].x);
+        const double sm = t.x * (cen.y - v[0].y) - t.y * (cen.x - v[0].x);
+        if (!(sc * sm > 0)) return 0;
+    }
+    return 1;
 }
 
 static pl_status ensure_bodies(pl_stokes *m, int n) {
@@ -140,8 +188,16 @@ static pl_status build(pl_stokes *m, pl_world *w, const pl_grain_view *g) {
     const pl_stokes_def *d = &m->def;
     pl_sb_bnd *b = &m->bnd;
     pl_sb_bnd_clear(b);
+    for (int k = 0; k < d->container_count; k++) {
+        const int i = d->container[k];
+        if (i >= g->n || g->shape[i] != PL_SHAPE_SEGMENT)
+            return pl__world_error(w, PL_ERR_ARG,
+                                   "stokes: container wall %d (body %d) is not a wall segment of this world (it has %d "
+                                   "bodies); list the walls made by w:wall{}",
+                                   k + 1, i, g->n);
+    }
     int nw = 0;
-    for (int i = 0; i < g->n; i++) nw += g->shape[i] == PL_SHAPE_SEGMENT;
+    for (int i = 0; i < g->n; i++) nw += is_side(d, g, i);
     if (nw < 3)
         return pl__world_error(w, PL_ERR_STATE,
                                "stokes: the fluid needs a closed container of at least 3 wall segments (the world has "
@@ -151,7 +207,7 @@ static pl_status build(pl_stokes *m, pl_world *w, const pl_grain_view *g) {
     if (!sl) return pl__world_error(w, PL_ERR_NOMEM, "stokes: out of memory");
     pl_vec2 cen = {0, 0};
     for (int i = 0, k = 0; i < g->n; i++) {
-        if (g->shape[i] != PL_SHAPE_SEGMENT) continue;
+        if (!is_side(d, g, i)) continue;
         const pl_vec2 *v = g->verts + g->vert_offset[i];
         sl[k] = (side_line){i, v[0], v[1], {0.5 * (v[0].x + v[1].x), 0.5 * (v[0].y + v[1].y)}, 0};
         cen.x += sl[k].mid.x / nw;
@@ -264,7 +320,7 @@ static pl_status build(pl_stokes *m, pl_world *w, const pl_grain_view *g) {
     /* particles */
     const double sh = 0.5 * d->gap;
     for (int i = 0; i < g->n && st == PL_OK; i++) {
-        if (g->shape[i] == PL_SHAPE_SEGMENT) continue;
+        if (g->shape[i] == PL_SHAPE_SEGMENT || !in_container(d, g, g->pos[i])) continue;
         const pl_vec2 c = g->pos[i];
         /* inside the container */
         for (int k = 0; k < nw; k++) {
@@ -632,7 +688,8 @@ static pl_status sb_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
         force[i].x += m->force[i].x;
         force[i].y += m->force[i].y;
         moment[i] += m->moment[i];
-        if (g->shape[i] != PL_SHAPE_SEGMENT) { /* buoyancy of the fully submerged grain (4.39) */
+        if (g->shape[i] != PL_SHAPE_SEGMENT && in_container(&m->def, g, g->pos[i])) {
+            /* buoyancy of the fully submerged grain (4.39) */
             force[i].x -= m->def.density * g->area[i] * g->gravity.x;
             force[i].y -= m->def.density * g->area[i] * g->gravity.y;
         }
@@ -650,6 +707,10 @@ static uint64_t sb_hash(const void *self, uint64_t h) {
     double v[PL_STOKES_PARAM_COUNT];
     def_values(&m->def, v);
     h = pl_hash_bytes(h, v, sizeof v);
+    if (m->def.container_count > 0) { /* only when chosen: scenes without one keep their hashes */
+        h = pl_hash_bytes(h, &m->def.container_count, sizeof m->def.container_count);
+        h = pl_hash_bytes(h, m->def.container, (size_t)m->def.container_count * sizeof m->def.container[0]);
+    }
     h = pl_hash_bytes(h, &m->steps, sizeof m->steps);
     const int32_t nb = m->nb;
     h = pl_hash_bytes(h, &nb, sizeof nb);
@@ -696,13 +757,13 @@ static pl_status sb_restore(void *self, pl_world *w, const void *snap) {
 
 static void sb_snapshot_free(void *snap) { pl_free(snap); }
 
-/* Image: layout word, the def's parameters as doubles (table order), steps, nb, force[nb],
-   moment[nb]. */
+/* Image: layout word, the def's parameters as doubles (table order), the chosen container
+   (count and PL_STOKES_CONTAINER_MAX body indices, int32), steps, nb, force[nb], moment[nb]. */
 static uint64_t layout_word(void) {
     uint64_t h = PL_HASH_SEED;
     const uint32_t sizes[4] = {PL_STOKES_PARAM_COUNT, (uint32_t)sizeof(int64_t), (uint32_t)sizeof(pl_vec2),
                                (uint32_t)sizeof(double)};
-    h = pl_hash_bytes(h, "stokes-bem-1", 12);
+    h = pl_hash_bytes(h, "stokes-bem-2", 12);
     return pl_hash_bytes(h, sizes, sizeof sizes);
 }
 
@@ -713,7 +774,10 @@ static pl_status sb_save(const void *self, pl_image *img) {
     def_values(&m->def, v);
     const int32_t nb = m->nb;
     pl_status st = pl__image_put(img, &lw, sizeof lw);
+    int32_t box[1 + PL_STOKES_CONTAINER_MAX] = {m->def.container_count};
+    for (int k = 0; k < PL_STOKES_CONTAINER_MAX; k++) box[1 + k] = m->def.container[k];
     if (st == PL_OK) st = pl__image_put(img, v, sizeof v);
+    if (st == PL_OK) st = pl__image_put(img, box, sizeof box);
     if (st == PL_OK) st = pl__image_put(img, &m->steps, sizeof m->steps);
     if (st == PL_OK) st = pl__image_put(img, &nb, sizeof nb);
     if (st == PL_OK) st = pl__image_put_array(img, m->force, sizeof(pl_vec2), (size_t)m->nb);
@@ -730,7 +794,9 @@ static pl_status sb_load(void *self, pl_world *w, pl_image *img) {
     pl_status st = pl__image_get(img, &lw, sizeof lw);
     if (st == PL_OK && lw != layout_word())
         return pl__world_error(w, PL_ERR_IO, "load: the image's stokes section has another layout");
+    int32_t box[1 + PL_STOKES_CONTAINER_MAX] = {0};
     if (st == PL_OK) st = pl__image_get(img, v, sizeof v);
+    if (st == PL_OK) st = pl__image_get(img, box, sizeof box);
     if (st == PL_OK) st = pl__image_get(img, &steps, sizeof steps);
     if (st == PL_OK) st = pl__image_get(img, &nb, sizeof nb);
     if (st != PL_OK) return st;
@@ -738,6 +804,8 @@ static pl_status sb_load(void *self, pl_world *w, pl_image *img) {
         return pl__world_error(w, PL_ERR_IO, "load: the image's stokes section is damaged (body count %d)", (int)nb);
     pl_stokes_def d = m->def;
     for (int k = 0; k < PL_STOKES_PARAM_COUNT; k++) pl_param_write(&pl_stokes_params[k], &d, v[k]);
+    d.container_count = box[0];
+    for (int k = 0; k < PL_STOKES_CONTAINER_MAX; k++) d.container[k] = box[1 + k];
     if (check_def(w, &d) != PL_OK)
         return pl__world_error(w, PL_ERR_IO, "load: the image's stokes section is damaged (a field is out of its range)");
     if (ensure_bodies(m, nb) != PL_OK) return pl__world_error(w, PL_ERR_NOMEM, "stokes: out of memory");
