@@ -10,6 +10,7 @@
  * - determinism: a snapshot/restore and a save/load resume reproduce the state hash bit for bit. */
 #include "harness.h"
 #include "porelab/solid.h"
+#include "porelab/bonds.h"
 #include "porelab/world.h"
 #include <math.h>
 #include <stdlib.h>
@@ -114,6 +115,53 @@ static int test_disc_rests(void) {
     ENSURE_REL(-F.y, W, 0.01);
     ENSURE_REL(pen, W / 1e6, 0.02);
     pl_world_destroy(&sc.w);
+    return 0;
+}
+
+/* A disc bonded to the block's top and pulled off by a suddenly applied upward load m g (gravity
+   pointing up): the bond is a linear spring, so the tension peaks at 2 m g (step load on an
+   undamped spring, closed form); the brittle law breaks it when the tension passes R_n. With
+   R_n = 1.9 m g it breaks, with R_n = 2.1 m g it holds (the 5 % margins cover the block's own
+   compliance and the step's sampling of the peak). */
+static int pull_off(double rn_over_w, int *broke, double *nmax) {
+    scene sc;
+    const double g = 9.81;
+    ENSURE(build(&sc, g, 1e10, 0, 0, 0.2 + 0.05, 0, 0) == 0);
+    pl_bond_def bd = pl_default_bond_def();
+    bd.kn = 1e6;
+    bd.rn = rn_over_w * sc.mass * g;
+    bd.rt = 1e9;
+    const int made = pl_world_solid_bond(sc.w, &bd, 1e-6);
+    if (made != 1) fprintf(stderr, "solid_bond: %d (%s)\n", made, pl_world_last_error(sc.w));
+    ENSURE(made == 1);
+    *nmax = 0;
+    for (int k = 0; k < 400; k++) {
+        ENSURE(pl_world_step(sc.w, 10) == PL_OK);
+        pl_bond_info bi;
+        ENSURE(pl_world_solid_bonds(sc.w, &bi, 1) == 1);
+        if (bi.state == PL_BOND_INTACT && bi.n > *nmax) *nmax = bi.n;
+    }
+    int intact;
+    pl_world_solid_bond_count(sc.w, &intact);
+    *broke = intact == 0;
+    *nmax /= sc.mass * g;
+    pl_world_destroy(&sc.w);
+    return 0;
+}
+
+static int test_bond_pull_off(void) {
+    int b1, b2;
+    double n1, n2;
+    ENSURE(pull_off(1.9, &b1, &n1) == 0);
+    ENSURE(pull_off(2.1, &b2, &n2) == 0);
+    fprintf(stderr, "bonded disc under a step load m g: R_n = 1.9 m g %s (largest tension %.4f m g), R_n = 2.1 m g "
+                    "%s (largest tension %.4f m g)\n",
+            b1 ? "broke" : "held", n1, b2 ? "broke" : "held", n2);
+    pl_validation("solids.bond_pull_off", "disc bonded to an element edge, step load m g: peak tension, break",
+                  "2 m g (step load on a linear spring); breaks iff R_n < 2 m g", "2 %",
+                  "peak %.4f m g; R_n 1.9 m g %s, 2.1 m g %s", n2, b1 ? "broke" : "held", b2 ? "broke" : "held");
+    ENSURE(b1 && !b2);
+    ENSURE_REL(n2, 2.0, 0.02);
     return 0;
 }
 
@@ -291,6 +339,7 @@ static int test_hash_resume(void) {
 int main(void) {
     RUN(test_world_step_includes_solid);
     RUN(test_disc_rests);
+    RUN(test_bond_pull_off);
     RUN(test_bounce);
     RUN(test_polygon_rest_bounce);
     RUN(test_hash_resume);
