@@ -16,6 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+static double build_friction = 0; /* solid's friction coefficient in build() */
+static int build_prescribed = 0;  /* 1: the disc follows its initial velocity */
+
 typedef struct scene {
     pl_world *w;
     int disc;
@@ -37,7 +40,7 @@ static int build(scene *sc, double gy, double young, double cn, double dt_fixed,
     const int mat = pl_world_add_material(sc->w, &md);
     pl_body_def bd = pl_default_body_def();
     bd.shape = PL_SHAPE_DISC;
-    bd.motion = PL_MOTION_DYNAMIC;
+    bd.motion = build_prescribed ? PL_MOTION_PRESCRIBED : PL_MOTION_DYNAMIC;
     bd.material = mat;
     sc->r = 0.05;
     bd.radius = sc->r;
@@ -58,6 +61,7 @@ static int build(scene *sc, double gy, double young, double cn, double dt_fixed,
     sd.contact_stiffness = 1e6;
     sd.contact_damping = cn;
     sd.damping = solid_damping;
+    sd.friction = build_friction;
     if (pl_world_attach_solid(sc->w, &sd) != PL_OK) {
         fprintf(stderr, "%s\n", pl_world_last_error(sc->w));
         return 1;
@@ -162,6 +166,44 @@ static int test_bond_pull_off(void) {
                   "peak %.4f m g; R_n 1.9 m g %s, 2.1 m g %s", n2, b1 ? "broke" : "held", b2 ? "broke" : "held");
     ENSURE(b1 && !b2);
     ENSURE_REL(n2, 2.0, 0.02);
+    return 0;
+}
+
+/* A disc pressed into the block by delta and driven along its top at v: F_n = k_n delta,
+   F_t = mu F_n tanh(v / v_e); over a time T the friction work is W = F_t v T, the heat the
+   solid receives alpha W / 2 (half to each side, the grains' law) and its Archard wear
+   k F_n v T / H (closed forms; 1 %: the block's deflection changes delta by k_n / E ~ 1e-4). */
+static int test_heat_wear(void) {
+    scene sc;
+    build_friction = 0.5;
+    build_prescribed = 1;
+    const double delta = 1e-4, v = 0.1, alpha = 0.8, kw = 1e-3, H = 1e8;
+    const int bad = build(&sc, 0, 1e10, 0, 0, 0.2 + 0.05 - delta, 0, 0);
+    build_friction = 0;
+    build_prescribed = 0;
+    ENSURE(bad == 0);
+    pl_world_set_body_velocity(sc.w, sc.disc, (pl_vec2){v, 0}, 0);
+    pl_thermal_def th = pl_default_thermal_def();
+    th.heat_capacity = 500;
+    th.wear = kw;
+    th.hardness = H;
+    ENSURE(pl_world_solid_thermal(sc.w, &th, alpha, 293.15) == PL_OK);
+    const double t0 = pl_world_time(sc.w);
+    ENSURE(pl_world_step(sc.w, 2000) == PL_OK);
+    const double T = pl_world_time(sc.w) - t0;
+    double q, wv, tmax;
+    ENSURE(pl_world_solid_thermal_totals(sc.w, &q, &wv, &tmax) == PL_OK);
+    const double Fn = 1e6 * delta, Ft = 0.5 * Fn * tanh(v / 1e-3);
+    const double qx = 0.5 * alpha * Ft * v * T, wx = kw * Fn * v * T / H;
+    fprintf(stderr, "sliding disc over %.4g s: solid heat %.6g J/m (alpha W/2 = %.6g), wear %.6g m^2/m (k F_n s / H = "
+                    "%.6g), hottest node %.5g K\n",
+            T, q, qx, wv, wx, tmax);
+    pl_validation("solids.heat_wear", "disc sliding on an element edge: heat and Archard wear of the element side",
+                  "alpha mu F_n v T / 2; k F_n v T / H", "1 %", "heat %.5g vs %.5g J/m, wear %.5g vs %.5g m^2/m", q, qx,
+                  wv, wx);
+    ENSURE_REL(q, qx, 0.01);
+    ENSURE_REL(wv, wx, 0.01);
+    pl_world_destroy(&sc.w);
     return 0;
 }
 
@@ -340,6 +382,7 @@ int main(void) {
     RUN(test_world_step_includes_solid);
     RUN(test_disc_rests);
     RUN(test_bond_pull_off);
+    RUN(test_heat_wear);
     RUN(test_bounce);
     RUN(test_polygon_rest_bounce);
     RUN(test_hash_resume);
