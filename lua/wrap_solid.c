@@ -14,6 +14,10 @@
  *     w:solid_info() -> {nodes, elements, critical_dt, solid_seconds, contact_seconds}
  *     w:solid_extremes() -> mises_max, plastic_strain_max
  *     w:solid_contact_force() -> fx, fy (of the grains on the solid)
+ *     w:solid_bond{ law = "brittle", kn =, kt =, rn =, rt =, ..., gap = 0 } -> bonds made
+ *     w:solid_bonds() -> total, intact
+ *     w:solid_thermal{ heat_capacity =, wear =, hardness =, ..., fraction = 1, initial = 293.15 }
+ *     w:solid_heat() -> heat (J/m), worn area (m^2/m), hottest node (K)
  * The def fields come from the parameter table (pl_solid_params); formulation may also be
  * given by name. Registered into the world metatable with luaL_setfuncs. */
 #include "wrap.h"
@@ -21,6 +25,7 @@
 #include "lua_params.h"
 #include "sandbox.h"
 #include "porelab/solid.h"
+#include "porelab/bonds.h"
 #include <math.h>
 
 static const char *const FORMS[] = {"plain", "fic_explicit", "fic_semi_implicit", "q1p0", NULL};
@@ -270,6 +275,60 @@ static int s_contact_force(lua_State *L) {
     return 2;
 }
 
+/* Reads and removes field k of the table at idx (the rest goes to a parameter table). */
+static double take_number(lua_State *L, int idx, const char *fn, const char *k, double dflt) {
+    const double v = pl_lua_field_number(L, idx, fn, k, dflt);
+    lua_pushnil(L);
+    lua_setfield(L, idx, k);
+    return v;
+}
+
+static int s_bond(lua_State *L) {
+    const char *fn = "solid_bond";
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    pl_lua_check_def(L, 2, fn);
+    static const char *const laws[] = {"brittle", "plastic", "damage", NULL};
+    pl_bond_def d = pl_default_bond_def();
+    d.law = (pl_bond_law_kind)pl_lua_field_option(L, 2, fn, "law", 0, laws);
+    lua_pushnil(L);
+    lua_setfield(L, 2, "law");
+    const double gap = take_number(L, 2, fn, "gap", 0);
+    pl_lua_read_params(L, 2, fn, pl_bond_params, PL_BOND_PARAM_COUNT, &d);
+    const int n = pl_world_solid_bond(lw->w, &d, gap);
+    pl_lua_check_status(L, lw->w, n, fn);
+    lua_pushinteger(L, n);
+    return 1;
+}
+
+static int s_bonds(lua_State *L) {
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    int intact;
+    lua_pushinteger(L, pl_world_solid_bond_count(lw->w, &intact));
+    lua_pushinteger(L, intact);
+    return 2;
+}
+
+static int s_thermal(lua_State *L) {
+    const char *fn = "solid_thermal";
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    pl_lua_check_def(L, 2, fn);
+    const double fraction = take_number(L, 2, fn, "fraction", 1), t0 = take_number(L, 2, fn, "initial", 293.15);
+    pl_thermal_def d = pl_default_thermal_def();
+    pl_lua_read_params(L, 2, fn, pl_thermal_params, PL_THERMAL_PARAM_COUNT, &d);
+    pl_lua_check_status(L, lw->w, pl_world_solid_thermal(lw->w, &d, fraction, t0), fn);
+    return 0;
+}
+
+static int s_heat(lua_State *L) {
+    pl_lua_world *lw = pl_lua_check_world(L, 1);
+    double q, v, t;
+    pl_lua_check_status(L, lw->w, pl_world_solid_thermal_totals(lw->w, &q, &v, &t), "solid_heat");
+    lua_pushnumber(L, q);
+    lua_pushnumber(L, v);
+    lua_pushnumber(L, t);
+    return 3;
+}
+
 const luaL_Reg pl_lua_solid_methods[] = {{"solid", s_solid},
                                          {"solid_rectangle", s_rectangle},
                                          {"solid_quad", s_quad},
@@ -286,4 +345,8 @@ const luaL_Reg pl_lua_solid_methods[] = {{"solid", s_solid},
                                          {"solid_mesh", s_mesh},
                                          {"solid_extremes", s_extremes},
                                          {"solid_contact_force", s_contact_force},
+                                         {"solid_bond", s_bond},
+                                         {"solid_bonds", s_bonds},
+                                         {"solid_thermal", s_thermal},
+                                         {"solid_heat", s_heat},
                                          {NULL, NULL}};

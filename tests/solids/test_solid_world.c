@@ -10,10 +10,14 @@
  * - determinism: a snapshot/restore and a save/load resume reproduce the state hash bit for bit. */
 #include "harness.h"
 #include "porelab/solid.h"
+#include "porelab/bonds.h"
 #include "porelab/world.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+static double build_friction = 0; /* solid's friction coefficient in build() */
+static int build_prescribed = 0;  /* 1: the disc follows its initial velocity */
 
 typedef struct scene {
     pl_world *w;
@@ -36,7 +40,7 @@ static int build(scene *sc, double gy, double young, double cn, double dt_fixed,
     const int mat = pl_world_add_material(sc->w, &md);
     pl_body_def bd = pl_default_body_def();
     bd.shape = PL_SHAPE_DISC;
-    bd.motion = PL_MOTION_DYNAMIC;
+    bd.motion = build_prescribed ? PL_MOTION_PRESCRIBED : PL_MOTION_DYNAMIC;
     bd.material = mat;
     sc->r = 0.05;
     bd.radius = sc->r;
@@ -57,6 +61,7 @@ static int build(scene *sc, double gy, double young, double cn, double dt_fixed,
     sd.contact_stiffness = 1e6;
     sd.contact_damping = cn;
     sd.damping = solid_damping;
+    sd.friction = build_friction;
     if (pl_world_attach_solid(sc->w, &sd) != PL_OK) {
         fprintf(stderr, "%s\n", pl_world_last_error(sc->w));
         return 1;
@@ -113,6 +118,91 @@ static int test_disc_rests(void) {
                   W / 1e6);
     ENSURE_REL(-F.y, W, 0.01);
     ENSURE_REL(pen, W / 1e6, 0.02);
+    pl_world_destroy(&sc.w);
+    return 0;
+}
+
+/* A disc bonded to the block's top and pulled off by a suddenly applied upward load m g (gravity
+   pointing up): the bond is a linear spring, so the tension peaks at 2 m g (step load on an
+   undamped spring, closed form); the brittle law breaks it when the tension passes R_n. With
+   R_n = 1.9 m g it breaks, with R_n = 2.1 m g it holds (the 5 % margins cover the block's own
+   compliance and the step's sampling of the peak). */
+static int pull_off(double rn_over_w, int *broke, double *nmax) {
+    scene sc;
+    const double g = 9.81;
+    ENSURE(build(&sc, g, 1e10, 0, 0, 0.2 + 0.05, 0, 0) == 0);
+    pl_bond_def bd = pl_default_bond_def();
+    bd.kn = 1e6;
+    bd.rn = rn_over_w * sc.mass * g;
+    bd.rt = 1e9;
+    const int made = pl_world_solid_bond(sc.w, &bd, 1e-6);
+    if (made != 1) fprintf(stderr, "solid_bond: %d (%s)\n", made, pl_world_last_error(sc.w));
+    ENSURE(made == 1);
+    *nmax = 0;
+    for (int k = 0; k < 400; k++) {
+        ENSURE(pl_world_step(sc.w, 10) == PL_OK);
+        pl_bond_info bi;
+        ENSURE(pl_world_solid_bonds(sc.w, &bi, 1) == 1);
+        if (bi.state == PL_BOND_INTACT && bi.n > *nmax) *nmax = bi.n;
+    }
+    int intact;
+    pl_world_solid_bond_count(sc.w, &intact);
+    *broke = intact == 0;
+    *nmax /= sc.mass * g;
+    pl_world_destroy(&sc.w);
+    return 0;
+}
+
+static int test_bond_pull_off(void) {
+    int b1, b2;
+    double n1, n2;
+    ENSURE(pull_off(1.9, &b1, &n1) == 0);
+    ENSURE(pull_off(2.1, &b2, &n2) == 0);
+    fprintf(stderr, "bonded disc under a step load m g: R_n = 1.9 m g %s (largest tension %.4f m g), R_n = 2.1 m g "
+                    "%s (largest tension %.4f m g)\n",
+            b1 ? "broke" : "held", n1, b2 ? "broke" : "held", n2);
+    pl_validation("solids.bond_pull_off", "disc bonded to an element edge, step load m g: peak tension, break",
+                  "2 m g (step load on a linear spring); breaks iff R_n < 2 m g", "2 %",
+                  "peak %.4f m g; R_n 1.9 m g %s, 2.1 m g %s", n2, b1 ? "broke" : "held", b2 ? "broke" : "held");
+    ENSURE(b1 && !b2);
+    ENSURE_REL(n2, 2.0, 0.02);
+    return 0;
+}
+
+/* A disc pressed into the block by delta and driven along its top at v: F_n = k_n delta,
+   F_t = mu F_n tanh(v / v_e); over a time T the friction work is W = F_t v T, the heat the
+   solid receives alpha W / 2 (half to each side, the grains' law) and its Archard wear
+   k F_n v T / H (closed forms; 1 %: the block's deflection changes delta by k_n / E ~ 1e-4). */
+static int test_heat_wear(void) {
+    scene sc;
+    build_friction = 0.5;
+    build_prescribed = 1;
+    const double delta = 1e-4, v = 0.1, alpha = 0.8, kw = 1e-3, H = 1e8;
+    const int bad = build(&sc, 0, 1e10, 0, 0, 0.2 + 0.05 - delta, 0, 0);
+    build_friction = 0;
+    build_prescribed = 0;
+    ENSURE(bad == 0);
+    pl_world_set_body_velocity(sc.w, sc.disc, (pl_vec2){v, 0}, 0);
+    pl_thermal_def th = pl_default_thermal_def();
+    th.heat_capacity = 500;
+    th.wear = kw;
+    th.hardness = H;
+    ENSURE(pl_world_solid_thermal(sc.w, &th, alpha, 293.15) == PL_OK);
+    const double t0 = pl_world_time(sc.w);
+    ENSURE(pl_world_step(sc.w, 2000) == PL_OK);
+    const double T = pl_world_time(sc.w) - t0;
+    double q, wv, tmax;
+    ENSURE(pl_world_solid_thermal_totals(sc.w, &q, &wv, &tmax) == PL_OK);
+    const double Fn = 1e6 * delta, Ft = 0.5 * Fn * tanh(v / 1e-3);
+    const double qx = 0.5 * alpha * Ft * v * T, wx = kw * Fn * v * T / H;
+    fprintf(stderr, "sliding disc over %.4g s: solid heat %.6g J/m (alpha W/2 = %.6g), wear %.6g m^2/m (k F_n s / H = "
+                    "%.6g), hottest node %.5g K\n",
+            T, q, qx, wv, wx, tmax);
+    pl_validation("solids.heat_wear", "disc sliding on an element edge: heat and Archard wear of the element side",
+                  "alpha mu F_n v T / 2; k F_n v T / H", "1 %", "heat %.5g vs %.5g J/m, wear %.5g vs %.5g m^2/m", q, qx,
+                  wv, wx);
+    ENSURE_REL(q, qx, 0.01);
+    ENSURE_REL(wv, wx, 0.01);
     pl_world_destroy(&sc.w);
     return 0;
 }
@@ -291,6 +381,8 @@ static int test_hash_resume(void) {
 int main(void) {
     RUN(test_world_step_includes_solid);
     RUN(test_disc_rests);
+    RUN(test_bond_pull_off);
+    RUN(test_heat_wear);
     RUN(test_bounce);
     RUN(test_polygon_rest_bounce);
     RUN(test_hash_resume);

@@ -117,6 +117,33 @@ int pl_world_copy_bonds(const pl_world *w, int first, pl_bond_info *out, int cap
 /// break events, in bond order. Returns how many were written (<= cap); with cap 0 it counts.
 int pl_world_broken_bonds(const pl_world *w, int64_t since, pl_bond_info *out, int cap);
 
+/// History of one bond held by another model (the finite-element solid's grain-edge bonds,
+/// porelab/solid.h): the law's state of pl_bond_law_eval. Zero it at creation.
+typedef struct pl_bond_history {
+    double up_n, up_t;   ///< plastic opening and slip, m
+    double kap_n, kap_t; ///< plastic: accumulated plastic increment; damage: largest |u| reached, m
+    double om_n, om_t;   ///< damage 0..1
+    double dissipated;   ///< released so far, J per m
+} pl_bond_history;
+
+/// What pl_bond_law_eval gives: tension n (N, > 0 pulling), shear s (N), moment m (N m), the
+/// energy stored after the evaluation and released by it (J), and the break (pl_bond_state,
+/// 0 while intact; forces are 0 once broken).
+typedef struct pl_bond_result {
+    double n, s, m, elastic, released;
+    int broke;
+} pl_bond_result;
+
+/// The grains' bond law (brittle, plastic or damage, as pl_world_set_bond_law; docs/rock.md)
+/// for opening un (m), slip ut (m) and rotation rot (rad), all since creation, of a bond of
+/// half width hw (m, the beam criterion's R); updates h. The same kernel as the disc-disc bonds.
+/// def must have passed pl_bond_def_check.
+void pl_bond_law_eval(const pl_bond_def *def, pl_bond_history *h, double un, double ut, double rot, double hw,
+                      pl_bond_result *out);
+/// Checks a bond law (ranges of pl_bond_params; kn, rn, rt > 0; kt > 0 for the plastic and damage
+/// laws) and resolves kt = -1 to kn/2. PL_OK, or PL_ERR_ARG with the reason in msg.
+pl_status pl_bond_def_check(pl_bond_def *def, const char *who, char *msg, size_t len);
+
 /* ------------------------------------------------------------------ heat and wear */
 
 /// Thermal and wear properties of a material (seed 002 §4). Fill with pl_default_thermal_def().
@@ -137,6 +164,13 @@ pl_thermal_def pl_default_thermal_def(void);
 /// Parameter table of pl_thermal_def.
 #define PL_THERMAL_PARAM_COUNT 7
 extern const pl_param pl_thermal_params[PL_THERMAL_PARAM_COUNT];
+/// Hardness at temperature T (K), Pa: H_0 max(h_min, 1 - beta (T - t_ref)) (seed 002 §4.2).
+double pl_thermal_hardness(const pl_thermal_def *d, double T);
+/// Heat q (J per m, >= 0) and wear work fn_s = F_n |v_t| dt (N m per m) that a sliding contact
+/// with another model (the finite-element solid) delivers to grain `body`: its temperature rises
+/// by q / (m c) and, while wear is on, its worn area by k fn_s / H(T) (the grain-grain laws,
+/// docs/rock.md). Nothing happens while heat is off. PL_ERR_ARG for a bad body or value.
+pl_status pl_world_body_contact_heat(pl_world *w, int body, double q, double fn_s);
 /// Sets the thermal and wear properties of a material.
 pl_status pl_world_set_thermal(pl_world *w, int material, const pl_thermal_def *def);
 

@@ -127,6 +127,33 @@ pl_status pl_world_solid_extremes(const pl_world *w, double *mises_max, double *
 /// Total contact force of the grains on the solid (N/m), last step.
 pl_vec2 pl_world_solid_contact_force(const pl_world *w);
 
+/// Cohesion between discs and the solid (docs/solids.md): ties every disc whose centre lies
+/// over a boundary edge's face and whose surface is within `gap` (m, >= 0) of it to the edge's
+/// material point under it, with the grains' bond law (porelab/bonds.h: brittle, plastic or
+/// damage; one law for all the solid's bonds). The bond acts in parallel with the contact; its
+/// opening, slip and rotation are measured from the edge's moving material point and direction;
+/// when it breaks the disc goes on as an ordinary contact. Call after every part is meshed.
+/// Returns the number of bonds created or a negative status.
+typedef struct pl_bond_def pl_bond_def;
+typedef struct pl_bond_info pl_bond_info;
+typedef struct pl_thermal_def pl_thermal_def;
+int pl_world_solid_bond(pl_world *w, const pl_bond_def *law, double gap);
+/// Bonds ever created; *intact (may be NULL) gets the intact ones.
+int pl_world_solid_bond_count(const pl_world *w, int *intact);
+/// Copies up to cap bonds: a = disc, b = the edge's first node, point = the edge's material
+/// point, n/s/m the last tension (N/m, > 0 pulling), shear and moment. Returns how many.
+int pl_world_solid_bonds(const pl_world *w, pl_bond_info *out, int cap);
+/// Frictional heat and Archard wear on the element side (the laws of the grains' contacts,
+/// docs/rock.md): each sliding grain-edge point turns `fraction` of the friction work
+/// |F_t v_t| dt into heat, half to the solid (spread to the edge's nodes by the edge shape
+/// functions; a node's temperature is t0 + Q/(m c), no conduction inside the solid) and half to
+/// the grain (pl_world_body_contact_heat, while the world's heat is on); the solid's nodes wear
+/// dV = k F_n |v_t| dt / H(T) (def: heat_capacity, wear k, hardness H_0, softening; conductivity
+/// unused). Call after every part is meshed.
+pl_status pl_world_solid_thermal(pl_world *w, const pl_thermal_def *def, double fraction, double t0);
+/// Heat received by the solid (J/m), its worn area (m^2/m) and its hottest node (K).
+pl_status pl_world_solid_thermal_totals(const pl_world *w, double *heat, double *wear, double *t_max);
+
 #ifdef __cplusplus
 }
 #endif

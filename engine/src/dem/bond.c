@@ -8,6 +8,7 @@
 #include "core/alloc.h"
 #include "dem/world_internal.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -170,6 +171,39 @@ static int find_law(const pl_world *w, int ma, int mb) {
     return -1;
 }
 
+pl_status pl_bond_def_check(pl_bond_def *d, const char *who, char *msg, size_t len) {
+    if ((int)d->law < PL_BOND_BRITTLE || (int)d->law > PL_BOND_DAMAGE) {
+        snprintf(msg, len, "%s: law must be brittle (0), plastic (1) or damage (2) (got %d)", who, (int)d->law);
+        return PL_ERR_ARG;
+    }
+    if (pl_params_check_all(pl_bond_params, PL_BOND_PARAM_COUNT, d, who, msg, len) != PL_OK) return PL_ERR_ARG;
+    if (!(d->kn > 0) || !(d->rn > 0) || !(d->rt > 0)) {
+        snprintf(msg, len, "%s: kn, rn and rt must be > 0 (got kn = %g N/m, rn = %g N, rt = %g N)", who, d->kn, d->rn,
+                 d->rt);
+        return PL_ERR_ARG;
+    }
+    if (d->kt < 0) d->kt = 0.5 * d->kn;
+    if (d->law != PL_BOND_BRITTLE && !(d->kt > 0)) {
+        snprintf(msg, len, "%s: the plastic and damage laws need kt > 0", who);
+        return PL_ERR_ARG;
+    }
+    return PL_OK;
+}
+
+/* The law for a bond held by another model: its history in a pl_bond_history. */
+void pl_bond_law_eval(const pl_bond_def *def, pl_bond_history *h, double un, double ut, double rot, double hw,
+                      pl_bond_result *out) {
+    pl_bond b;
+    memset(&b, 0, sizeof b);
+    b.up_n = h->up_n, b.up_t = h->up_t, b.kap_n = h->kap_n, b.kap_t = h->kap_t;
+    b.om_n = h->om_n, b.om_t = h->om_t, b.dissipated = h->dissipated;
+    pl_bond_eval e;
+    pl__bond_law(def, &b, un, ut, rot, hw, &e);
+    h->up_n = b.up_n, h->up_t = b.up_t, h->kap_n = b.kap_n, h->kap_t = b.kap_t;
+    h->om_n = b.om_n, h->om_t = b.om_t, h->dissipated = b.dissipated;
+    *out = (pl_bond_result){e.n, e.s, e.m, e.elastic, e.released, e.broke};
+}
+
 pl_status pl_world_set_bond_law(pl_world *w, int ma, int mb, const pl_bond_def *def) {
     if (!def) return pl__error(w, PL_ERR_ARG, "bond law: no definition");
     if (ma < 0 || mb < 0 || ma >= w->material_count || mb >= w->material_count)
@@ -178,17 +212,10 @@ pl_status pl_world_set_bond_law(pl_world *w, int ma, int mb, const pl_bond_def *
     if ((int)def->law < PL_BOND_BRITTLE || (int)def->law > PL_BOND_DAMAGE)
         return pl__error(w, PL_ERR_ARG, "bond law: law must be brittle (0), plastic (1) or damage (2) (got %d)",
                          (int)def->law);
-    char msg[512];
-    if (pl_params_check_all(pl_bond_params, PL_BOND_PARAM_COUNT, def, "bond law", msg, sizeof msg) != PL_OK)
-        return pl__error(w, PL_ERR_ARG, "%s", msg);
-    if (!(def->kn > 0) || !(def->rn > 0) || !(def->rt > 0))
-        return pl__error(w, PL_ERR_ARG,
-                         "bond law (materials %d, %d): kn, rn and rt must be > 0 (got kn = %g N/m, rn = %g N, rt = %g N)",
-                         ma, mb, def->kn, def->rn, def->rt);
+    char msg[512], who[64];
+    snprintf(who, sizeof who, "bond law (materials %d, %d)", ma, mb);
     pl_bond_def d = *def;
-    if (d.kt < 0) d.kt = 0.5 * d.kn;
-    if (d.law != PL_BOND_BRITTLE && !(d.kt > 0))
-        return pl__error(w, PL_ERR_ARG, "bond law (materials %d, %d): the plastic and damage laws need kt > 0", ma, mb);
+    if (pl_bond_def_check(&d, who, msg, sizeof msg) != PL_OK) return pl__error(w, PL_ERR_ARG, "%s", msg);
     int k = find_law(w, ma, mb);
     if (k < 0) {
         if (!grow((void **)&w->bond_laws, &w->bond_law_cap, w->bond_law_n + 1, sizeof *w->bond_laws))

@@ -94,6 +94,23 @@ int pl_world_copy_temperatures(const pl_world *w, double *out, int cap) {
     return c;
 }
 
+double pl_thermal_hardness(const pl_thermal_def *d, double T) { return pl__hardness(d, T); }
+
+pl_status pl_world_body_contact_heat(pl_world *w, int i, double q, double fn_s) {
+    if (i < 0 || i >= w->n)
+        return pl__error(w, PL_ERR_ARG, "contact heat: body index must be in 0..%d (got %d)", w->n - 1, i);
+    if (!(q >= 0) || !(fn_s >= 0) || !isfinite(q) || !isfinite(fn_s))
+        return pl__error(w, PL_ERR_ARG, "contact heat: heat and wear work must be finite and >= 0 (got %g J, %g N m)",
+                         q, fn_s);
+    if (!w->heat_on || (w->removed && w->removed[i])) return PL_OK;
+    const pl_thermal_def *t = thermal_of(w, w->material[i]);
+    const double C = w->mass[i] * t->heat_capacity;
+    w->heat[i] += q;
+    if (!w->temp_hold[i] && C > 0) w->temperature[i] += q / C;
+    if (w->wear_on && t->wear > 0) w->wear[i] += t->wear * fn_s / pl__hardness(t, w->temperature[i]);
+    return PL_OK;
+}
+
 pl_status pl_world_enable_wear(pl_world *w, int remove) {
     if (!w->heat_on) return pl__error(w, PL_ERR_STATE, "wear: switch heat on first (the hardness H(T) needs temperatures)");
     w->wear_on = 1;

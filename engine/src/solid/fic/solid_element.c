@@ -158,6 +158,7 @@ void pl_sf_destroy(pl_sf *s) {
     pl_free(s->fe_prev); pl_free(s->m); pl_free(s->mp); pl_free(s->mt); pl_free(s->f); pl_free(s->du);
     pl_free(s->rhs); pl_free(s->fc); pl_free(s->xm); pl_free(s->fix); pl_free(s->vpres); pl_free(s->s); pl_free(s->pe);
     pl_free(s->ep); pl_free(s->alpha); pl_free(s->conn); pl_free(s->tau); pl_free(s->bedge);
+    pl_free(s->heat); pl_free(s->wear);
     for (int k = 0; k < s->nsets; k++) pl_free(s->sets[k].nodes);
     pl_free(s->sets);
     pl_free(s->trac);

@@ -11,6 +11,7 @@
 #define PL_SOLID_INTERNAL_H
 
 #include "porelab/solid.h"
+#include "porelab/bonds.h"
 #include <stddef.h>
 #include <stdint.h>
 
@@ -89,6 +90,12 @@ typedef struct pl_sf {
     double *rhs;         /* nn */
     double *fc;          /* 2 nn contact force on the solid this step */
     double *xm;          /* 2 nn mid-step configuration (updated Lagrangian) */
+    /* frictional heat and Archard wear of the element side (NULL while off; state when on) */
+    double *heat;        /* nn heat received by each boundary node, J/m */
+    double *wear;        /* nn worn area at each boundary node, m^2/m */
+    double heat_fraction;/* share of the friction work turned into heat (half to each side) */
+    double t0;           /* initial temperature, K */
+    pl_thermal_def thermal; /* c, Archard k, H(T) of the solid's material */
     char err[320];
 } pl_sf;
 
@@ -145,6 +152,8 @@ typedef struct pl_sf_contact_out {
     int touching;
     double e_dashpot, e_friction; /* dissipated this step, J/m */
     double spring;       /* energy in the contact springs now, J/m (polygons) */
+    double heat_grain;   /* heat the grain's side receives this step, J/m (heat on) */
+    double wear_work;    /* sum of F_n |v_t| dt of the sliding points this step, N m/m */
 } pl_sf_contact_out;
 void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, double r, double dt,
                         double *fsolid, pl_sf_contact_out *out);
@@ -156,6 +165,32 @@ void pl_sf_disc_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, dou
    nearest edge; the same spring-dashpot and friction as the discs. */
 void pl_sf_polygon_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, const pl_vec2 *vert, int nv,
                            double dt, double *fsolid, pl_sf_contact_out *out);
+
+/* Temperature of node i (K): t0 + heat / (m c); the solid does not conduct. */
+double pl_sf_node_temperature(const pl_sf *s, int i);
+
+/* A cohesive bond between a disc and a boundary edge (a, b): the disc's centre is tied to the
+   edge's material point at shape weight t0, at the normal distance d0 and relative angle th0
+   of the creation. The grains' bond law (pl_bond_law_eval) acts on the opening
+   u_n = (c - q).n - d0, the slip u_t = (c - q).e and the rotation (theta - phi) - th0
+   (q = (1 - t0) x_a + t0 x_b, e the edge's unit tangent at angle phi, n its outward normal). */
+typedef struct pl_sf_bond {
+    int32_t grain, a, b, state; /* state: pl_bond_state */
+    double t0, d0, th0;
+    pl_bond_history h;
+    double n, s, m;             /* last tension (N/m, > 0 pulling), shear, moment */
+    double un, ut, elastic;     /* last opening and slip (m), stored energy (J/m) */
+    double broken_time;         /* s, -1 while intact */
+} pl_sf_bond;
+
+/* Ties a disc (centre c, angle theta, radius r) to the nearest boundary edge whose face it
+   sits over within `gap` (surface to edge, m); 0 when there is none, 1 when bonded (*b filled). */
+int pl_sf_bond_make(const pl_sf *s, int grain, pl_vec2 c, double theta, double r, double gap, pl_sf_bond *b);
+/* Evaluates an intact bond with the law L: the force and moment on the disc into out (fx, fy,
+   m), the opposite (conjugate to the edge's node motion) into fsolid. Returns the energy
+   released this step (J/m); a break sets b->state. */
+double pl_sf_bond_force(const pl_sf *s, const pl_bond_def *L, pl_sf_bond *b, pl_vec2 c, double theta, double r,
+                        double *fsolid, pl_sf_contact_out *out);
 
 /* Linear triangle with nodes n of the coordinates xy: area (positive counter-clockwise) and
    shape-function gradients b = dN/dx, c = dN/dy. */

@@ -27,6 +27,10 @@ typedef struct pl_solid {
     pl_vec2 contact_total;
     double e_contact_spring; /* energy in the contact springs now, J/m */
     double e_contact_diss;   /* dissipated by dashpots and friction so far, J/m (state) */
+    /* grain-edge bonds (state) and their law */
+    pl_sf_bond *bonds;
+    int nbond, bond_cap;
+    pl_bond_def bond_law;
     double seconds;
     double seconds_contact; /* part of seconds: the grain-edge contact search and forces */
     long calls;
@@ -60,6 +64,12 @@ int pl_world_has_solid(const pl_world *w) { return get(w) != NULL; }
 
 static int add_mesh(pl_world *w, pl_sf_mesh *mesh, pl_status st, const char *msg) {
     pl_solid *m = get(w);
+    if (st == PL_OK && m->sf && (m->sf->heat || m->nbond > 0)) {
+        pl_sf_mesh_free(mesh);
+        return pl__world_error(w, PL_ERR_STATE,
+                               "solid: add every part before solid_thermal and solid_bond (they hold per-node and "
+                               "per-edge state of the parts given so far)");
+    }
     if (st != PL_OK) return pl__world_error(w, st, "%s", msg);
     if (m->sf) {
         st = pl_sf_append(m->sf, mesh);
@@ -80,6 +90,126 @@ static pl_solid *need(pl_world *w, const char *fn) {
     pl_solid *m = get(w);
     if (!m && w) pl__world_error(w, PL_ERR_STATE, "%s: the world has no solid (attach one with w:solid{...})", fn);
     return m;
+}
+
+/* ------------------------------------------------------------------ bonds, heat and wear */
+
+int pl_world_solid_bond(pl_world *w, const pl_bond_def *law, double gap) {
+    pl_solid *m = need(w, "solid_bond");
+    if (!m) return PL_ERR_STATE;
+    if (!m->sf) return pl__world_error(w, PL_ERR_STATE, "solid_bond: the solid has no parts yet (mesh it first)");
+    if (!law) return pl__world_error(w, PL_ERR_ARG, "solid_bond: no bond law given");
+    if (!(gap >= 0) || !isfinite(gap))
+        return pl__world_error(w, PL_ERR_ARG, "solid_bond: gap must be a finite distance >= 0 m (got %g)", gap);
+    pl_bond_def d = *law;
+    char msg[400];
+    if (pl_bond_def_check(&d, "solid_bond", msg, sizeof msg) != PL_OK) return pl__world_error(w, PL_ERR_ARG, "%s", msg);
+    if (m->nbond > 0 && memcmp(&d, &m->bond_law, sizeof d) != 0)
+        return pl__world_error(w, PL_ERR_ARG,
+                               "solid_bond: the solid's bonds already have a law; one law serves all grain-edge bonds "
+                               "(call solid_bond again with the same law)");
+    pl_status st = pl_sf_prepare(m->sf);
+    if (st != PL_OK) return pl__world_error(w, st, "%s", m->sf->err);
+    const pl_grain_view g = pl__world_grains(w);
+    int made = 0;
+    for (int i = 0; i < g.n; i++) {
+        if (g.shape[i] != PL_SHAPE_DISC) continue;
+        int dup = 0;
+        for (int k = 0; k < m->nbond && !dup; k++) dup = m->bonds[k].grain == i && m->bonds[k].state == PL_BOND_INTACT;
+        if (dup) continue;
+        pl_sf_bond b;
+        if (!pl_sf_bond_make(m->sf, i, g.pos[i], g.angle[i], g.radius[i], gap, &b)) continue;
+        if (m->nbond == m->bond_cap) {
+            const int c = m->bond_cap ? 2 * m->bond_cap : 64;
+            pl_sf_bond *q = pl_realloc(m->bonds, sizeof *q * (size_t)c);
+            if (!q) return pl__world_error(w, PL_ERR_NOMEM, "solid_bond: out of memory");
+            m->bonds = q;
+            m->bond_cap = c;
+        }
+        m->bonds[m->nbond++] = b;
+        made++;
+    }
+    m->bond_law = d;
+    pl__world_invalidate_dt(w);
+    return made;
+}
+
+int pl_world_solid_bond_count(const pl_world *w, int *intact) {
+    const pl_solid *m = get(w);
+    int c = 0;
+    if (m)
+        for (int k = 0; k < m->nbond; k++) c += m->bonds[k].state == PL_BOND_INTACT;
+    if (intact) *intact = c;
+    return m ? m->nbond : 0;
+}
+
+int pl_world_solid_bonds(const pl_world *w, pl_bond_info *out, int cap) {
+    const pl_solid *m = get(w);
+    if (!m || !m->sf) return 0;
+    int k = 0;
+    for (; k < m->nbond && k < cap; k++) {
+        const pl_sf_bond *b = &m->bonds[k];
+        const double *x = m->sf->x;
+        pl_bond_info *o = &out[k];
+        memset(o, 0, sizeof *o);
+        o->a = b->grain;
+        o->b = b->a; /* the edge's first node */
+        o->state = b->state;
+        o->n = b->n, o->s = b->s, o->m = b->m, o->un = b->un, o->ut = b->ut;
+        o->elastic = b->state == PL_BOND_INTACT ? b->elastic : 0;
+        o->dissipated = b->h.dissipated;
+        o->point = (pl_vec2){(1 - b->t0) * x[2 * b->a] + b->t0 * x[2 * b->b],
+                             (1 - b->t0) * x[2 * b->a + 1] + b->t0 * x[2 * b->b + 1]};
+        o->broken_step = -1;
+        o->broken_time = b->broken_time;
+    }
+    return k;
+}
+
+pl_status pl_world_solid_thermal(pl_world *w, const pl_thermal_def *def, double fraction, double t0) {
+    pl_solid *m = need(w, "solid_thermal");
+    if (!m) return PL_ERR_STATE;
+    if (!m->sf) return pl__world_error(w, PL_ERR_STATE, "solid_thermal: the solid has no parts yet (mesh it first)");
+    if (!def) return pl__world_error(w, PL_ERR_ARG, "solid_thermal: no thermal definition");
+    char msg[400];
+    if (pl_params_check_all(pl_thermal_params, PL_THERMAL_PARAM_COUNT, def, "solid_thermal", msg, sizeof msg) != PL_OK)
+        return pl__world_error(w, PL_ERR_ARG, "%s", msg);
+    if (!(fraction >= 0 && fraction <= 1))
+        return pl__world_error(w, PL_ERR_ARG, "solid_thermal: fraction must be in [0, 1] (got %g)", fraction);
+    if (!(t0 > 0) || !isfinite(t0))
+        return pl__world_error(w, PL_ERR_ARG, "solid_thermal: initial temperature must be > 0 K (got %g)", t0);
+    pl_sf *s = m->sf;
+    pl_status st = pl_sf_prepare(s);
+    if (st != PL_OK) return pl__world_error(w, st, "%s", s->err);
+    if (!s->heat) {
+        s->heat = pl_calloc((size_t)s->nn, sizeof *s->heat);
+        s->wear = pl_calloc((size_t)s->nn, sizeof *s->wear);
+        if (!s->heat || !s->wear) {
+            pl_free(s->heat), pl_free(s->wear);
+            s->heat = s->wear = NULL;
+            return pl__world_error(w, PL_ERR_NOMEM, "solid_thermal: out of memory");
+        }
+    }
+    s->thermal = *def;
+    s->heat_fraction = fraction;
+    s->t0 = t0;
+    return PL_OK;
+}
+
+pl_status pl_world_solid_thermal_totals(const pl_world *w, double *heat, double *wear, double *t_max) {
+    const pl_solid *m = get(w);
+    if (!m || !m->sf || !m->sf->heat) return PL_ERR_STATE;
+    const pl_sf *s = m->sf;
+    double q = 0, v = 0, tm = s->t0;
+    for (int i = 0; i < s->nn; i++) {
+        q += s->heat[i];
+        v += s->wear[i];
+        tm = fmax(tm, pl_sf_node_temperature(s, i));
+    }
+    if (heat) *heat = q;
+    if (wear) *wear = v;
+    if (t_max) *t_max = tm;
+    return PL_OK;
 }
 
 int pl_world_solid_rectangle(pl_world *w, double x0, double y0, double x1, double y1, int nx, int ny) {
@@ -334,6 +464,10 @@ static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, dou
         } else {
             continue;
         }
+        if (s->heat && (o.heat_grain > 0 || o.wear_work > 0)) {
+            const pl_status hs = pl_world_body_contact_heat(w, i, o.heat_grain, o.wear_work);
+            if (hs != PL_OK) return hs;
+        }
         if (!o.touching) continue;
         m->cf[i] = (pl_vec2){o.fx, o.fy};
         m->cm[i] = o.m;
@@ -341,6 +475,24 @@ static pl_status sd_advance(void *self, pl_world *w, const pl_grain_view *g, dou
         m->contact_total.y -= o.fy;
         m->e_contact_diss += o.e_dashpot + o.e_friction;
         m->e_contact_spring += o.spring;
+    }
+    /* bonds, in parallel with the contacts (as the grains' parallel bonds) */
+    for (int k = 0; k < m->nbond; k++) {
+        pl_sf_bond *bd = &m->bonds[k];
+        if (bd->state != PL_BOND_INTACT || bd->grain >= g->n) continue;
+        const int i = bd->grain;
+        pl_sf_contact_out o;
+        memset(&o, 0, sizeof o);
+        m->e_contact_diss += pl_sf_bond_force(s, &m->bond_law, bd, g->pos[i], g->angle[i], g->radius[i], s->fc, &o);
+        if (bd->state != PL_BOND_INTACT) {
+            bd->broken_time = g->time + dt;
+            continue;
+        }
+        m->cf[i].x += o.fx;
+        m->cf[i].y += o.fy;
+        m->cm[i] += o.m;
+        m->contact_total.x -= o.fx;
+        m->contact_total.y -= o.fy;
     }
     const double t1 = pl_clock_seconds();
     m->seconds_contact += t1 - t0;
@@ -370,7 +522,8 @@ static pl_status sd_loads(void *self, pl_world *w, const pl_grain_view *g, doubl
    lightest boundary node and the lightest dynamic disc of the world. */
 static double contact_dt(const pl_solid *m, const pl_grain_view *g, int *what) {
     const pl_sf *s = m->sf;
-    const double k = s->def.contact_stiffness;
+    /* an intact bond acts in parallel with the contact spring */
+    const double k = s->def.contact_stiffness + (m->nbond > 0 ? fmax(m->bond_law.kn, m->bond_law.kt) : 0);
     double mmin = INFINITY;
     *what = 0;
     if (!(k > 0)) return INFINITY;
@@ -396,14 +549,26 @@ static double sd_critical_dt(const void *self, const pl_world *w) {
 
 static double sd_stored_energy(const void *self) {
     const pl_solid *m = self;
-    return m->sf ? m->sf->e.kinetic + pl_sf_elastic_energy(m->sf) + m->e_contact_spring : 0;
+    if (!m->sf) return 0;
+    double eb = 0;
+    for (int k = 0; k < m->nbond; k++)
+        if (m->bonds[k].state == PL_BOND_INTACT) eb += m->bonds[k].elastic;
+    return m->sf->e.kinetic + pl_sf_elastic_energy(m->sf) + m->e_contact_spring + eb;
 }
 
 static uint64_t sd_hash(const void *self, uint64_t h) {
     const pl_solid *m = self;
     if (!m->sf) return h;
     h = pl_sf_hash(m->sf, h);
-    return pl_hash_bytes(h, &m->e_contact_diss, sizeof m->e_contact_diss);
+    h = pl_hash_bytes(h, &m->e_contact_diss, sizeof m->e_contact_diss);
+    /* bonds and the element side's heat and wear only when the scene uses them (so that other
+       scenes keep their hashes) */
+    if (m->nbond > 0) h = pl_hash_bytes(h, m->bonds, sizeof *m->bonds * (size_t)m->nbond);
+    if (m->sf->heat) {
+        h = pl_hash_bytes(h, m->sf->heat, sizeof(double) * (size_t)m->sf->nn);
+        h = pl_hash_bytes(h, m->sf->wear, sizeof(double) * (size_t)m->sf->nn);
+    }
+    return h;
 }
 
 /* The state: what pl_sf_hash folds (sizes first, then the arrays in a fixed order). */
@@ -412,7 +577,8 @@ typedef struct sd_arrays {
     size_t n;
 } sd_arrays;
 
-static int state_arrays(const pl_sf *s, sd_arrays *a) {
+static int state_arrays(const pl_solid *m, sd_arrays *a) {
+    const pl_sf *s = m->sf;
     const size_t N = (size_t)s->nn, I = (size_t)s->ne * s->nip;
     int k = 0;
     a[k++] = (sd_arrays){s->x, 2 * N};
@@ -425,6 +591,13 @@ static int state_arrays(const pl_sf *s, sd_arrays *a) {
     a[k++] = (sd_arrays){s->pe, I};
     a[k++] = (sd_arrays){s->ep, 4 * I};
     a[k++] = (sd_arrays){s->alpha, I};
+    if (s->heat) {
+        a[k++] = (sd_arrays){s->heat, N};
+        a[k++] = (sd_arrays){s->wear, N};
+    }
+    /* the bonds, as raw doubles (pl_sf_bond holds int32 pairs and doubles: a whole number of
+       doubles) */
+    if (m->nbond > 0) a[k++] = (sd_arrays){(double *)m->bonds, sizeof *m->bonds / sizeof(double) * (size_t)m->nbond};
     return k;
 }
 
@@ -444,20 +617,24 @@ static void set_scalars(pl_solid *m, const double *v) {
 
 #define SD_NSCAL 10
 
+/* Bonds and heat in one word: 2 nbond + (heat on). */
+static int64_t extra_state(const pl_solid *m) { return 2 * (int64_t)m->nbond + (m->sf && m->sf->heat ? 1 : 0); }
+_Static_assert(sizeof(pl_sf_bond) % sizeof(double) == 0, "pl_sf_bond must be a whole number of doubles");
+
 static void *sd_snapshot(const void *self, size_t *bytes) {
     const pl_solid *m = self;
     if (!m->sf) {
-        int64_t *z = pl_calloc(1, sizeof *z * 2);
-        if (bytes) *bytes = sizeof *z * 2;
+        int64_t *z = pl_calloc(1, sizeof *z * 3);
+        if (bytes) *bytes = sizeof *z * 3;
         return z;
     }
-    sd_arrays a[10];
-    const int na = state_arrays(m->sf, a);
-    size_t tot = 2 * sizeof(int64_t) + SD_NSCAL * sizeof(double);
+    sd_arrays a[12];
+    const int na = state_arrays(m, a);
+    size_t tot = 3 * sizeof(int64_t) + SD_NSCAL * sizeof(double);
     for (int k = 0; k < na; k++) tot += a[k].n * sizeof(double);
     char *buf = pl_malloc(tot);
     if (!buf) return NULL;
-    int64_t sz[2] = {m->sf->nn, m->sf->ne};
+    int64_t sz[3] = {m->sf->nn, m->sf->ne, extra_state(m)};
     memcpy(buf, sz, sizeof sz);
     size_t off = sizeof sz;
     double sc[SD_NSCAL];
@@ -475,7 +652,7 @@ static void *sd_snapshot(const void *self, size_t *bytes) {
 static pl_status sd_restore(void *self, pl_world *w, const void *snap) {
     pl_solid *m = self;
     const char *buf = snap;
-    int64_t sz[2];
+    int64_t sz[3];
     memcpy(sz, buf, sizeof sz);
     if (!m->sf) {
         if (sz[0] == 0) return PL_OK;
@@ -488,13 +665,18 @@ static pl_status sd_restore(void *self, pl_world *w, const void *snap) {
         return pl__world_error(w, PL_ERR_STATE,
                                "solid: the snapshot's solid has %lld nodes and %lld elements, this one %d and %d",
                                (long long)sz[0], (long long)sz[1], m->sf->nn, m->sf->ne);
+    if (sz[2] != extra_state(m))
+        return pl__world_error(w, PL_ERR_STATE,
+                               "solid: the snapshot's solid has %lld grain-edge bonds (heat %s), this one %d (heat %s)",
+                               (long long)(sz[2] / 2), sz[2] % 2 ? "on" : "off", m->nbond,
+                               m->sf->heat ? "on" : "off");
     size_t off = sizeof sz;
     double sc[SD_NSCAL];
     memcpy(sc, buf + off, sizeof sc);
     off += sizeof sc;
     set_scalars(m, sc);
-    sd_arrays a[10];
-    const int na = state_arrays(m->sf, a);
+    sd_arrays a[12];
+    const int na = state_arrays(m, a);
     for (int k = 0; k < na; k++) {
         memcpy(a[k].ptr, buf + off, a[k].n * sizeof(double));
         off += a[k].n * sizeof(double);
@@ -506,23 +688,24 @@ static void sd_snapshot_free(void *snap) { pl_free(snap); }
 
 /* Image layout: layout word (hash of the sizes), nn, ne (int64), SD_NSCAL doubles, then the
    state arrays of state_arrays() as counted arrays. */
-static uint64_t layout_word(int64_t nn, int64_t ne) {
-    const int64_t v[3] = {nn, ne, SD_NSCAL};
-    return pl_hash_bytes(0x736f6c6964ull, v, sizeof v);
+static uint64_t layout_word(int64_t nn, int64_t ne, int64_t extra) {
+    const int64_t v[4] = {nn, ne, SD_NSCAL, extra};
+    /* without bonds and heat: the layout of the images written before they existed */
+    return pl_hash_bytes(0x736f6c6964ull, v, extra ? sizeof v : 3 * sizeof(int64_t));
 }
 
 static pl_status sd_save(const void *self, pl_image *img) {
     const pl_solid *m = self;
     const int64_t sz[2] = {m->sf ? m->sf->nn : 0, m->sf ? m->sf->ne : 0};
-    const uint64_t lw = layout_word(sz[0], sz[1]);
+    const uint64_t lw = layout_word(sz[0], sz[1], extra_state(m));
     pl_status st = pl__image_put(img, &lw, sizeof lw);
     if (st == PL_OK) st = pl__image_put(img, sz, sizeof sz);
     if (st != PL_OK || !m->sf) return st;
     double sc[SD_NSCAL];
     scalars(m, sc);
     st = pl__image_put(img, sc, sizeof sc);
-    sd_arrays a[10];
-    const int na = state_arrays(m->sf, a);
+    sd_arrays a[12];
+    const int na = state_arrays(m, a);
     for (int k = 0; k < na && st == PL_OK; k++) st = pl__image_put_array(img, a[k].ptr, sizeof(double), a[k].n);
     return st;
 }
@@ -535,7 +718,7 @@ static pl_status sd_load(void *self, pl_world *w, pl_image *img) {
     if (st == PL_OK) st = pl__image_get(img, sz, sizeof sz);
     if (st != PL_OK) return pl__world_error(w, PL_ERR_IO, "load: the image's solid section is damaged");
     const int64_t nn = m->sf ? m->sf->nn : 0, ne = m->sf ? m->sf->ne : 0;
-    if (lw != layout_word(sz[0], sz[1]) || sz[0] != nn || sz[1] != ne)
+    if (lw != layout_word(sz[0], sz[1], extra_state(m)) || sz[0] != nn || sz[1] != ne)
         return pl__world_error(w, PL_ERR_IO,
                                "load: the image's solid has %lld nodes and %lld elements, this scene's %lld and %lld "
                                "(load into the scene that saved it)",
@@ -543,8 +726,8 @@ static pl_status sd_load(void *self, pl_world *w, pl_image *img) {
     if (!m->sf) return PL_OK;
     double sc[SD_NSCAL];
     st = pl__image_get(img, sc, sizeof sc);
-    sd_arrays a[10];
-    const int na = state_arrays(m->sf, a);
+    sd_arrays a[12];
+    const int na = state_arrays(m, a);
     for (int k = 0; k < na && st == PL_OK; k++) st = pl__image_get_array(img, a[k].ptr, sizeof(double), a[k].n);
     if (st != PL_OK) return pl__world_error(w, PL_ERR_IO, "load: the image's solid section is damaged");
     set_scalars(m, sc);
@@ -585,6 +768,7 @@ static double sd_cost(const void *self, long *calls) {
 static void sd_destroy(void *self) {
     pl_solid *m = self;
     pl_sf_destroy(m->sf);
+    pl_free(m->bonds);
     pl_free(m->cf);
     pl_free(m->cm);
     pl_free(m->cand);

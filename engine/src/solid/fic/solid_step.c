@@ -130,6 +130,34 @@ pl_status pl_sf_step(pl_sf *s, double dt, const double *fext) {
 
 /* ---------------------------------------------------------------- contact */
 
+double pl_sf_node_temperature(const pl_sf *s, int i) {
+    if (!s->heat) return NAN;
+    const double C = s->m[i] * s->thermal.heat_capacity;
+    return C > 0 ? s->t0 + s->heat[i] / C : s->t0;
+}
+
+/* Frictional heat and Archard wear of one sliding point (the laws of the grains' contacts,
+   dem/heat.c, docs/rock.md): Q = fraction |F_t v_t| dt, half to the element side spread to the
+   edge's nodes by the shape weights (1 - t, t) (b < 0: node a alone), half to the grain; the
+   element side wears dV = k F_n |v_t| dt / H(T) at each node by its weight. */
+static void slide_heat(const pl_sf *s, int a, int b, double t, double Fn, double Ft, double vt, double dt,
+                       pl_sf_contact_out *out) {
+    if (!s->heat) return;
+    const double Q = s->heat_fraction * fabs(Ft * vt) * dt, W = Fn > 0 ? Fn * fabs(vt) * dt : 0;
+    const double wa = b < 0 ? 1 : 1 - t;
+    out->heat_grain += 0.5 * Q;
+    out->wear_work += W;
+    const int nodes[2] = {a, b};
+    const double wt[2] = {wa, 1 - wa};
+    for (int k = 0; k < 2; k++) {
+        if (nodes[k] < 0 || wt[k] == 0) continue;
+        const int i = nodes[k];
+        s->heat[i] += 0.5 * Q * wt[k];
+        if (s->thermal.wear > 0)
+            s->wear[i] += wt[k] * s->thermal.wear * W / pl_thermal_hardness(&s->thermal, pl_sf_node_temperature(s, i));
+    }
+}
+
 static void contact_at(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, double r, double dt, pl_vec2 q,
                        pl_vec2 n, double delta, int a, int b, double t, double *fsolid, pl_sf_contact_out *out) {
     const pl_solid_def *d = &s->def;
@@ -153,6 +181,7 @@ static void contact_at(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, doub
     if (delta > out->overlap) out->overlap = delta;
     out->e_dashpot += d->contact_damping * vn * vn * dt;
     out->e_friction += fabs(Ft * vt) * dt;
+    slide_heat(s, a, b, t, Fn, Ft, vt, dt, out);
     (void)q;
     if (fsolid) {
         fsolid[2 * a] -= (1 - t) * Fx;
@@ -254,6 +283,7 @@ static void point_contact(const pl_sf *s, pl_vec2 c, pl_vec2 vc, double omega, d
     out->spring += 0.5 * d->contact_stiffness * delta * delta;
     out->e_dashpot += d->contact_damping * vn * vn * dt;
     out->e_friction += fabs(Ft * vt) * dt;
+    slide_heat(s, a, b, t, Fn, Ft, vt, dt, out);
     if (fsolid) {
         if (b < 0) {
             fsolid[2 * a] -= Fx;

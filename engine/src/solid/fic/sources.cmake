@@ -3,6 +3,7 @@
 list(APPEND PL_ENGINE_SOURCES
   src/solid/fic/solid_params.c
   src/solid/fic/solid_element.c
+  src/solid/fic/solid_bond.c
   src/solid/fic/solid_pressure.c
   src/solid/fic/solid_step.c
   src/solid/fic/solid_mesh_gmsh.c
