@@ -8,7 +8,7 @@
 set(PL_FUZZ ${CMAKE_CURRENT_LIST_DIR}/fuzz.sh)
 add_test(NAME fuzz COMMAND sh ${PL_FUZZ} $<TARGET_FILE:porelab> ${CMAKE_SOURCE_DIR}
          ${CMAKE_CURRENT_BINARY_DIR}/fuzz-out/fuzz --seed 13 --mutations 250 --jobs 2
-         --budget 25 --cpu 10 --deadline 100)
+         --budget 40 --cpu 10 --deadline 100)
 set_tests_properties(fuzz PROPERTIES LABELS fuzz TIMEOUT 180)
 add_test(NAME fuzz_long CONFIGURATIONS fuzz-long COMMAND sh ${PL_FUZZ} $<TARGET_FILE:porelab> ${CMAKE_SOURCE_DIR}
          ${CMAKE_CURRENT_BINARY_DIR}/fuzz-out/fuzz_long --seed 13 --mutations 3000 --set long --jobs 2
