@@ -207,6 +207,23 @@ static int test_heat_wear(void) {
     return 0;
 }
 
+/* Steps until the grain has touched the block and left it moving up (at most 200000 steps);
+   bi gets the grain's state at that step. Returns 0, or 1 with the world's message. */
+static int step_until_rebound(pl_world *w, int disc, pl_body_info *bi) {
+    int touched = 0;
+    for (int k = 0; k < 200000; k++) {
+        if (pl_world_step(w, 1) != PL_OK) {
+            fprintf(stderr, "%s\n", pl_world_last_error(w));
+            return 1;
+        }
+        pl_world_body_info(w, disc, bi);
+        const pl_vec2 F = pl_world_solid_contact_force(w);
+        if (F.y != 0) touched = 1;
+        if (touched && F.y == 0 && bi->velocity.y > 0) return 0;
+    }
+    return 0;
+}
+
 /* Drop at v0 onto the block; returns the rebound speed ratio and the energy terms. */
 static int bounce(double cn, double young, double *e, double *ke0, double *eend, double *zeta) {
     scene sc;
@@ -215,17 +232,7 @@ static int bounce(double cn, double young, double *e, double *ke0, double *eend,
     *zeta = cn / (2 * sqrt(sc.mass * 1e6));
     *ke0 = 0.5 * sc.mass * v0 * v0;
     pl_body_info bi;
-    int touched = 0;
-    for (int k = 0; k < 200000; k++) {
-        if (pl_world_step(sc.w, 1) != PL_OK) {
-            fprintf(stderr, "%s\n", pl_world_last_error(sc.w));
-            return 1;
-        }
-        pl_world_body_info(sc.w, sc.disc, &bi);
-        const pl_vec2 F = pl_world_solid_contact_force(sc.w);
-        if (F.y != 0) touched = 1;
-        if (touched && F.y == 0 && bi.velocity.y > 0) break;
-    }
+    if (step_until_rebound(sc.w, sc.disc, &bi)) return 1;
     *e = bi.velocity.y / v0;
     pl_solid_energy se;
     pl_world_solid_energy(sc.w, &se);
@@ -314,17 +321,7 @@ static int test_polygon_rest_bounce(void) {
     /* bounce, no gravity: a stiff block so that the grain's springs dominate */
     const double cn = 300, v0 = 1.0;
     ENSURE(build_square(&sc, 0, 1e11, cn, 0.2 + 0.002, -v0, 0) == 0);
-    int touched = 0;
-    for (int k = 0; k < 200000; k++) {
-        if (pl_world_step(sc.w, 1) != PL_OK) {
-            fprintf(stderr, "%s\n", pl_world_last_error(sc.w));
-            return 1;
-        }
-        pl_world_body_info(sc.w, sc.disc, &bi);
-        const pl_vec2 Fc = pl_world_solid_contact_force(sc.w);
-        if (Fc.y != 0) touched = 1;
-        if (touched && Fc.y == 0 && bi.velocity.y > 0) break;
-    }
+    if (step_until_rebound(sc.w, sc.disc, &bi)) return 1;
     const double zeta = 2 * cn / (2 * sqrt(2 * kn * sc.mass));
     const double eref = exp(-zeta * M_PI / sqrt(1 - zeta * zeta)), e = bi.velocity.y / v0;
     fprintf(stderr, "square bounce: e = %.4f (two spring-dashpots %.4f, zeta %.3f), spin after %.2g rad/s\n", e, eref,
