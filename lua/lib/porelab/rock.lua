@@ -50,20 +50,22 @@ local function compact(w, box, p, vmax, kn, max_steps, tol)
   return steps, err
 end
 
---- The strength parameters the laboratory scenes share (docs/rock.md, "Calibration"), appended
--- to a scene's own porelab.params list: kn (bond and contact normal stiffness, N/m, default
--- 2e10), kt_ratio (k_t / k_n, 0.5), rn (bond tensile strength R_n, N/m, 2.5e4) and rt_ratio
--- (R_t / R_n, 2).
+-- The strength parameters the laboratory scenes share (docs/rock.md, "Calibration").
+local STRENGTH = {
+  { name = "kn", unit = "N/m", value = 2e10, min = 1e8, max = 1e12, doc = "bond and contact normal stiffness" },
+  { name = "kt_ratio", unit = "", value = 0.5, min = 0.05, max = 1, doc = "bond k_t / k_n" },
+  { name = "rn", unit = "N/m", value = 2.5e4, min = 1e2, max = 1e8, doc = "bond tensile strength R_n" },
+  { name = "rt_ratio", unit = "", value = 2, min = 0.25, max = 10, doc = "bond shear strength R_t / R_n" },
+}
+
+--- A scene's own porelab.params list with the shared strength parameters appended: kn (bond
+-- and contact normal stiffness, N/m, default 2e10), kt_ratio (k_t / k_n, 0.5), rn (bond tensile
+-- strength R_n, N/m, 2.5e4) and rt_ratio (R_t / R_n, 2).
 --   local P = porelab.params(rock.with_strength_params { {name = "size", ...}, ... })
 function rock.with_strength_params(list)
   local out = {}
   for i, p in ipairs(list) do out[i] = p end
-  for _, p in ipairs {
-    { name = "kn", unit = "N/m", value = 2e10, min = 1e8, max = 1e12, doc = "bond and contact normal stiffness" },
-    { name = "kt_ratio", unit = "", value = 0.5, min = 0.05, max = 1, doc = "bond k_t / k_n" },
-    { name = "rn", unit = "N/m", value = 2.5e4, min = 1e2, max = 1e8, doc = "bond tensile strength R_n" },
-    { name = "rt_ratio", unit = "", value = 2, min = 0.25, max = 10, doc = "bond shear strength R_t / R_n" },
-  } do out[#out + 1] = p end
+  for _, p in ipairs(STRENGTH) do out[#out + 1] = p end
   return out
 end
 
@@ -73,7 +75,10 @@ end
 -- S holds the fields of rock.with_strength_params (a scene's P); without it, their defaults.
 -- Returns granite, steel.
 function rock.lab_materials(w, S)
-  S = S or { kn = 2e10, kt_ratio = 0.5, rn = 2.5e4, rt_ratio = 2 }
+  if not S then
+    S = {}
+    for _, p in ipairs(STRENGTH) do S[p.name] = p.value end
+  end
   local kt = S.kt_ratio * S.kn
   local granite = w:material { name = "granite", density = 2650, kn = S.kn, ks = kt, friction = 0.5 }
   local steel = w:material { name = "steel", density = 7800, kn = S.kn, ks = kt, friction = 0.5 }
