@@ -16,10 +16,10 @@ foreach(part dfg plates)
 endforeach()
 set_tests_properties(test_ns_validation test_ns_validation_dfg test_ns_validation_plates PROPERTIES
                      LABELS "navier_stokes;physics" TIMEOUT 120)
-add_test(NAME test_ns_validation_long COMMAND test_ns_validation long)
+add_test(NAME test_ns_validation_long CONFIGURATIONS long COMMAND test_ns_validation long)
 set_tests_properties(test_ns_validation_long PROPERTIES LABELS "navier_stokes;physics;long" TIMEOUT 900)
 pl_add_c_test(test_ns_world SOURCES ${PL_TEST_DIR}/navier_stokes/test_ns_world.c LABEL "navier_stokes;physics" TIMEOUT 120)
-add_test(NAME test_ns_world_long COMMAND test_ns_world long)
+add_test(NAME test_ns_world_long CONFIGURATIONS long COMMAND test_ns_world long)
 set_tests_properties(test_ns_world_long PROPERTIES LABELS "navier_stokes;physics;long" TIMEOUT 900)
 # Benchmark (not a test): error against CPU time for the three elements, cost split, charts
 # for docs/navier-stokes.md (with PLplot):  build/tests/bench_navier_stokes docs/figures

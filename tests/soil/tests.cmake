@@ -6,13 +6,13 @@ pl_add_c_test(test_soil_quicksand SOURCES ${PL_TEST_DIR}/soil/test_soil_quicksan
 pl_add_c_test(test_soil_overburden SOURCES ${PL_TEST_DIR}/soil/test_soil_overburden.c LABEL soil TIMEOUT 60)
 # The liquefaction scene run whole; its on_finish asserts the r_u criteria (docs/soil.md §5.3).
 if(TARGET porelab)
-  add_test(NAME soil_liquefaction COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/soil/liquefaction.lua -q
+  add_test(NAME soil_liquefaction CONFIGURATIONS long COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/soil/liquefaction.lua -q
            --fps 30 --size 120x42 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/liquefaction)
   set_tests_properties(soil_liquefaction PROPERTIES LABELS "soil;long" TIMEOUT 600)
   # Terzaghi with grains: the consolidation scene run whole (four columns, ~80 s); its on_finish
   # asserts the columns' mean degree of consolidation within 10% / 5% / 5% of U(T_v) at T_v = 0.1, 0.2,
   # 0.5 (docs/soil.md §5.2). 120 frames/s: the frames are the scene's samples of settlement.
-  add_test(NAME soil_consolidation COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/soil/consolidation.lua -q
+  add_test(NAME soil_consolidation CONFIGURATIONS long COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/soil/consolidation.lua -q
            --fps 120 --size 100x48 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/consolidation)
   set_tests_properties(soil_consolidation PROPERTIES LABELS "soil;long" TIMEOUT 900)
   # The same with one column (default set, ~20 s): the single-column tolerance, 20% (§5.2).
@@ -32,7 +32,7 @@ if(TARGET porelab)
   add_test(NAME soil_simple_shear_uncoupled COMMAND porelab run ${CMAKE_SOURCE_DIR}/tests/soil/simple_shear_uncoupled.lua
            --trust -q --size 160x92 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/simple_shear_uncoupled)
   set_tests_properties(soil_simple_shear_uncoupled PROPERTIES LABELS "soil" TIMEOUT 120)
-  add_test(NAME soil_simple_shear_full COMMAND porelab run ${CMAKE_SOURCE_DIR}/tests/soil/simple_shear_check.lua --trust -q
+  add_test(NAME soil_simple_shear_full CONFIGURATIONS long COMMAND porelab run ${CMAKE_SOURCE_DIR}/tests/soil/simple_shear_check.lua --trust -q
            --size 300x172 --out ${CMAKE_CURRENT_BINARY_DIR}/soil-out/simple_shear_full)
   set_tests_properties(soil_simple_shear_full PROPERTIES LABELS "soil;long" TIMEOUT 300)
 endif()

@@ -28,7 +28,7 @@ if(LOG)
 else()
   list(JOIN TESTS "|" re)
   message(STATUS "validation-doc: running ${TESTS}")
-  execute_process(COMMAND "${CTEST}" --test-dir "${BUILD}" -R "^(${re})$" -V -j${JOBS}
+  execute_process(COMMAND "${CTEST}" --test-dir "${BUILD}" -C long -R "^(${re})$" -V -j${JOBS}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   file(WRITE "${BUILD}/validation-doc.log" "${out}${err}")
   if(NOT rc EQUAL 0)
