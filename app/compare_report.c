@@ -353,7 +353,9 @@ static void summary(const pl_cmp_results *r, FILE *f)
                     unit = r->rows[i].knob_unit;
                     if (r->rows[i].failed && r->rows[i].ratio == fl) note = r->rows[i].note;
                 }
-            fprintf(f, "| %s | %.3g %s | %.3g | %.3g | %s |\n", p->title, lim, unit, st, fl, note);
+            const int bare = unit[0] == '\0' || strcmp(unit, "1") == 0; /* dimensionless: no unit */
+            fprintf(f, "| %s | %.3g%s%s | %.3g | %.3g | %s |\n", p->title, lim, bare ? "" : " ", bare ? "" : unit, st,
+                    fl, note);
         }
         fprintf(f, "\n");
     }

@@ -105,6 +105,8 @@ static int n_stats(lua_State *L)
     setn(L, "t_project", s.t_project);
     setn(L, "coupling_ratio", s.coupling_ratio);
     setn(L, "coupling_body", s.coupling_body + 1);
+    setn(L, "coupling_translation", s.coupling_translation);
+    setn(L, "coupling_rotation", s.coupling_rotation);
     return 1;
 }
 

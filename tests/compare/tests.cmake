@@ -47,6 +47,16 @@ pl_cli_test(stability_sweeps_more RC 0
   MATCH "Servo wall [^|]*\\| 20 m/s \\| 0.99 \\| 1.01 \\|.*Grain step, polygon [^|]*\\| [0-9.e-]+ s \\| 0.5 \\| 0.55 \\|"
   MATCH2 "Stokes drag coupling [^|]*\\| [0-9.e-]+ s \\| 0.9 \\| 0.94 \\|.*Explicit FE solid [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\| refused")
 
+# The Navier-Stokes drag coupling (label navier_stokes; ~20 s CPU): stable up to the computed
+# relaxation limit 2 / (1 + D tau / m), failing between 1.0 and 1.2 of it (measured 1 / 1.05).
+get_target_property(_pl_cmp_defs porelab_engine INTERFACE_COMPILE_DEFINITIONS)
+if("${_pl_cmp_defs}" MATCHES "PL_HAVE_GMSH=1")
+  pl_cli_test(stability_ns_drag RC 0
+    ARGS compare ${PL_CMP}/stability/ns_drag.lua --out ${PL_CLI_OUT}/stability_ns
+    MATCH "Navier–Stokes drag coupling [^|]*\\| [0-9.]+ \\| (0.95|1) \\| (1.05|1.1|1.2) \\|")
+  set_tests_properties(cli_stability_ns_drag PROPERTIES LABELS "cli;navier_stokes" TIMEOUT 300)
+endif()
+
 # Each run-time limit: past it the message names what, where and the safe setting.
 pl_cli_test(guard_grain_step RC 1 ARGS run tests/cli/bad/unstable.lua --quiet --out ${PL_CLI_OUT}/guard_grain
   MATCH "unstable: .*critical step .*a safe step is [0-9.e-]+ s")
@@ -116,7 +126,8 @@ add_custom_target(compare_docs
           tests/compare/problems/energy.lua tests/compare/stability/grain_translation.lua
           tests/compare/stability/grain_rotation.lua tests/compare/stability/polygon_area.lua
           tests/compare/stability/undrained_stagger.lua tests/compare/stability/servo_gain.lua
-          tests/compare/stability/stokes_drag.lua tests/compare/stability/solid_step.lua
+          tests/compare/stability/stokes_drag.lua tests/compare/stability/ns_drag.lua
+          tests/compare/stability/solid_step.lua
           --out docs/compare --update-doc docs/compare.md
   COMMAND $<TARGET_FILE:test_stability_explicit_darcy> docs/compare
   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}
