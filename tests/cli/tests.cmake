@@ -150,6 +150,11 @@ pl_cli_test(run_bad_number RC 2 ARGS run scenes/demo.lua --steps ten
 pl_cli_test(info RC 0 ARGS info scenes/demo.lua
   MATCH "time step +dt = .* s \\(automatic: 0.2 x the critical step\\)"
   MATCH2 "critical step +[0-9.e-]+ s = 2 sqrt\\(m/k\\), limited by body #[0-9]+")
+# a step fixed by a declarative scene that was never stepped before info (the report was empty:
+# "dt = 0 s (automatic ...)", "critical step 0 s ... (?)")
+pl_cli_test(info_fixed_dt RC 0 ARGS info scenes/five_discs.lua
+  MATCH "time step +dt = 0.001 s \\(fixed by the scene; 0.0[0-9]+ of the critical step\\)"
+  MATCH2 "critical step +0.04[0-9]+ s = 2 sqrt\\(m/k\\), limited by body #[0-9]+ \\(translation\\)")
 foreach(ext png svg pdf)
   pl_cli_test(still_${ext} RC 0
     ARGS still scenes/two_disc_impact.lua --at 0.05 -o ${PL_CLI_OUT}/still.${ext}

@@ -94,7 +94,8 @@ double pl_world_dt(pl_world *w) {
 }
 
 pl_dt_report pl_world_dt_report(pl_world *w) {
-    if (w->dt <= 0) pl__compute_dt(w), pl__models_limit_dt(w);
+    /* also when a fixed step was set before any estimate was made (the report is then empty) */
+    if (w->dt <= 0 || w->dt_report.dt != w->dt) pl__compute_dt(w), pl__models_limit_dt(w);
     return w->dt_report;
 }
 
