@@ -209,7 +209,9 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     pl_render_scene_denoise_fluid(s);
     quantity q;
     body_quantity(s, opt, &q);
-    if (q.active && q.auto_hi > q.auto_lo) {
+    /* the automatic ranges are recorded only where the scene fixed none (a fixed range is drawn
+       as given, and must not be reported as having grown) */
+    if (q.active && q.auto_hi > q.auto_lo && !(opt->color_max > opt->color_min)) {
         dl->auto_color_set = 1;
         dl->auto_color_lo = q.auto_lo;
         dl->auto_color_hi = q.auto_hi;
@@ -217,10 +219,11 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     /* the colour bar shows the fluid field when it is drawn, else the body quantity */
     quantity fq;
     memset(&fq, 0, sizeof fq);
-    if ((L & (PL_LAYER_PRESSURE | PL_LAYER_ISOLINES)) &&
-        pl_fluid_field_range(s, opt, &fq.vmin, &fq.vmax, &fq.map, fq.label, sizeof fq.label,
-                             &fq.unit_factor)) {
-        fq.active = (L & PL_LAYER_PRESSURE) != 0;
+    const int field = (L & (PL_LAYER_PRESSURE | PL_LAYER_ISOLINES)) &&
+                      pl_fluid_field_range(s, opt, &fq.vmin, &fq.vmax, &fq.map, fq.label, sizeof fq.label,
+                                           &fq.unit_factor);
+    if (field) fq.active = (L & PL_LAYER_PRESSURE) != 0;
+    if (field && !(opt->fluid_max > opt->fluid_min)) {
         pl_render_options auto_opt = *opt;
         auto_opt.fluid_min = auto_opt.fluid_max = 0.0;
         double alo, ahi, uf;

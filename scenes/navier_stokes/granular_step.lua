@@ -7,7 +7,8 @@
 -- Preparation, as in the seed: the rightmost column of grains is held fixed while the rest of
 -- the step is filled by grains raining in dry (DEM only, damped) until they settle. Then the
 -- water is added, the damping switched off and the column released at t = 0 of the frames; the
--- step collapses and the grains come to rest by about 0.35 s.
+-- step collapses (the seed: the grains come to rest by about 0.35 s; here the last grains stop
+-- by about 0.5 s and the kinetic energy falls to 1e-10 of its peak by 0.7 s, docs/navier-stokes.md).
 --
 -- The mesh (gmsh) is graded from h_near on the cores to h_far at grade_distance; it follows the
 -- grains by node relocation and is rebuilt when its smallest angle falls below remesh_angle.
@@ -22,16 +23,22 @@ local random = require "porelab.random"
 local P = porelab.params {
   { name = "h_near", unit = "m", value = 0.0012, min = 0.0004, max = 0.003,
     doc = "mesh size on the grain cores" },
-  { name = "t_end", unit = "s", value = 0.5, min = 0.005, max = 2,
+  { name = "t_end", unit = "s", value = 0.7, min = 0.005, max = 2,
     doc = "simulated time after the release" },
-  { name = "solve_every", unit = "steps", value = 10, min = 1, max = 100,
-    doc = "grain steps per fluid step (fluid step = solve_every dt)" },
+  { name = "solve_every", unit = "steps", value = 20, min = 1, max = 100,
+    doc = "grain steps per fluid step (fluid step = solve_every dt, dt = 50 us)" },
+  { name = "rest_speed", unit = "m/s", value = 0, min = 0, max = 1,
+    doc = "if > 0, the run fails unless every grain is slower than this at the end and the "
+       .. "kinetic energy has fallen below 1e-8 of its peak (the ctest's check)" },
 }
 P.solve_every = math.floor(P.solve_every)
 
 local W, H = 0.70, 0.15        -- box, m
 local SW, SH = 0.04, 0.02      -- step, m
-local w = porelab.world { gravity = { 0, -9.81 }, dt = 1e-4, local_damping = 0.5 }
+-- The grain step: 50 us, 0.14 of the critical step porelab computes. At 100 us (0.27 of it) a
+-- grain held by several contacts keeps a period-two rocking oscillation of about 1 mm/s that
+-- never dies (the estimate is made per contact; docs/navier-stokes.md, "The granular step").
+local w = porelab.world { gravity = { 0, -9.81 }, dt = 5e-5, local_damping = 0.5 }
 local grain = w:material { name = "grain", density = 2500, kn = 2e5, friction = 0.5,
                            restitution = 0.2 }
 local box = w:material { name = "box", density = 2500, kn = 2e5, friction = 0.5, restitution = 0.2 }
@@ -115,11 +122,20 @@ return {
                         .. "grain speed at the end %.3g m/s", math.max(table.unpack(ke)), ts[#ts],
                         last, vmax[#vmax]))
     local pos = {}
-    for i = 1, #ke do pos[i] = math.max(ke[i], 1e-12) end
+    for i = 1, #ke do pos[i] = math.max(ke[i], 1e-15) end
     porelab.chart { file = "granular_step_ke.png",
                     title = "Granular step under water: kinetic energy of the grains",
                     xlabel = "time after release (s)", ylabel = "kinetic energy (J per m)",
                     logy = true, legend = "none",
                     series = { { name = "kinetic energy", x = ts, y = pos } } }
+    if P.rest_speed > 0 then
+      local peak = math.max(table.unpack(ke))
+      assert(vmax[#vmax] < P.rest_speed and last < 1e-8 * peak,
+             string.format("the grains are not at rest at t = %.3f s: largest speed %.3g m/s "
+                           .. "(limit %.3g), kinetic energy %.3g of its peak (limit 1e-8)",
+                           ts[#ts], vmax[#vmax], P.rest_speed, last / peak))
+      print(string.format("at rest: largest grain speed %.3g m/s < %.3g m/s, kinetic energy %.3g of its peak",
+                          vmax[#vmax], P.rest_speed, last / peak))
+    end
   end,
 }

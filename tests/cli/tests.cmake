@@ -199,6 +199,14 @@ pl_cli_test(packing_helpers RC 0 ARGS run tests/cli/lua/packing.lua --quiet --ou
 # Numeric fields out of their documented ranges are refused with file:line, field and range.
 pl_cli_test(field_ranges RC 0 ARGS run tests/cli/lua/ranges.lua --quiet --out ${PL_CLI_OUT}/field_ranges
   MATCH "field ranges: 22 out-of-range inputs refused")
+# A scene that fixes its colour range and arrow scale is drawn with them and gets no note that
+# the automatic range "grew" (it was computed and reported although unused).
+get_target_property(_pl_cli_defs porelab_engine INTERFACE_COMPILE_DEFINITIONS)
+if("${_pl_cli_defs}" MATCHES "PL_HAVE_GMSH=1")
+  pl_cli_test(fixed_ranges_no_note RC 0 ARGS run scenes/navier_stokes/settling_inertial.lua --steps 40
+    --out ${PL_CLI_OUT}/fixed_ranges NOMATCH "grew during the run|arrows were shortened"
+    EXPECT_FILE ${PL_CLI_OUT}/fixed_ranges/frame_000002.png)
+endif()
 # A world without bodies draws its (empty) frames instead of crashing the renderer.
 pl_cli_test(empty_world RC 0 ARGS run tests/cli/lua/empty_world.lua --quiet --out ${PL_CLI_OUT}/empty_world
   EXPECT_FILE ${PL_CLI_OUT}/empty_world/frame_000001.png)

@@ -1,0 +1,87 @@
+-- Description: A disc settling at a Reynolds number of about 20 with a wake behind it, against the classic drag of a cylinder.
+-- A disc of radius 1 mm, slightly heavier than water, settles in a wide closed box of water
+-- (rho_F = 1000 kg/m^3, eta = 1 mPa s, box 40 diameters wide). At its terminal speed U the
+-- buoyant weight balances the drag, (rho_P - rho_F) g pi r^2 = 0.5 rho_F U^2 C_D 2r, so the run
+-- measures the drag coefficient C_D at the Reynolds number Re = rho_F U 2r / eta it reaches.
+-- Reference: the steady flow past a cylinder, Dennis & Chang (1970, J. Fluid Mech. 42:471):
+-- C_D = 2.846 / 2.045 / 1.522 at Re = 10 / 20 / 40 (interpolated in log-log at the measured Re).
+-- In the Stokes limit the same drag would be Lamb's, which falls off as 1/(Re ln Re): the
+-- inertia of the wake is what sets the speed here (docs/navier-stokes.md, "Settling with
+-- inertia"). The walls are 20 diameters away; their effect on C_D at this Re is a few per cent
+-- (blockage d/W = 0.025).
+--   porelab run scenes/navier_stokes/settling_inertial.lua
+--   porelab run scenes/navier_stokes/settling_inertial.lua --param rho_p=1020   # faster, Re ~ 40
+local P = porelab.params {
+  { name = "rho_p", unit = "kg/m^3", value = 1006.5, min = 1000.5, max = 1100,
+    doc = "density of the disc (the water is 1000 kg/m^3)" },
+  { name = "h_near", unit = "m", value = 1.25e-4, min = 5e-5, max = 5e-4,
+    doc = "mesh size on the disc" },
+  { name = "t_end", unit = "s", value = 1.5, min = 0.01, max = 10, doc = "simulated time" },
+  { name = "tolerance", unit = "1", value = 0, min = 0, max = 1,
+    doc = "if > 0, the run fails unless C_D is within this fraction of the reference (the ctest's check)" },
+}
+local R, MU, RHO_F = 1e-3, 1e-3, 1000
+local W, H = 0.08, 0.08
+local DT, EVERY = 5e-4, 10        -- grain step, grain steps per fluid step (tau = 5 ms)
+local w = porelab.world { gravity = { 0, -9.81 }, dt = DT }
+local m = w:material { name = "grain", density = P.rho_p, kn = 1e3 }
+-- start near the expected terminal speed (C_D ~ 2) to shorten the approach
+local u0 = math.sqrt((P.rho_p - RHO_F) * 9.81 * math.pi * R * R / (RHO_F * 2.0 * 2 * R))
+local disc = w:disc { center = { 0, H - 0.012 }, radius = R, material = m, velocity = { 0, -0.5 * u0 } }
+w:navier_stokes { x_min = -W / 2, x_max = W / 2, y_min = 0, y_max = H, density = RHO_F, viscosity = MU,
+                  core_fraction = 1.0, h_near = P.h_near, h_far = 0.004, grade_distance = 0.012,
+                  disc_sides = 96, solve_every = EVERY, force_relaxation = 0.5 }
+
+-- Dennis & Chang (1970), steady cylinder drag
+local REF = { { 10, 2.846 }, { 20, 2.045 }, { 40, 1.522 } }
+local function cd_ref(re)
+  local a, b = REF[1], REF[2]
+  if re > 20 then a, b = REF[2], REF[3] end
+  local s = math.log(b[2] / a[2]) / math.log(b[1] / a[1])
+  return a[2] * (re / a[1]) ^ s
+end
+
+local ts, us = {}, {}
+local csv = porelab.csv("settling.csv", { "t_s", "speed_m_per_s", "y_m" })
+local area = w:body(disc:index()):mass() / P.rho_p      -- the 96-gon core's area
+return {
+  world = w,
+  run = { t_end = P.t_end, every = 2 * EVERY },
+  render = { size = { 720, 720 }, camera = { -0.012, H - 0.05, 0.012, H - 0.002 },
+             layers = "bodies,pressure,velocity,colorbar,title,time,scalebar",
+             fluid_field = "speed", fluid_range = { 0, 0.012 }, velocity_scale = 0.3,
+             title = "Disc settling in water at Re ≈ 20: fluid speed" },
+  on_frame = function(world)
+    local _, vy = disc:velocity()
+    local _, y = disc:position()
+    ts[#ts + 1], us[#us + 1] = world:time(), -vy
+    csv:row(world:time(), -vy, y)
+  end,
+  on_finish = function(world)
+    csv:close()
+    local n = #us
+    local U = us[n]
+    local drift = math.abs(us[n] - us[math.max(1, n - 10)]) / U   -- change over the last 10 frames
+    local d = 2 * math.sqrt(area / math.pi)                          -- equal-area diameter
+    local Wp = (P.rho_p - RHO_F) * 9.81 * area
+    local re = RHO_F * U * d / MU
+    local cd = 2 * Wp / (RHO_F * U * U * d)
+    local ref = cd_ref(re)
+    print(string.format("settling with inertia: terminal speed %.5g m/s (change over the last 0.1 s %.2g), "
+                        .. "Re = %.2f, C_D = %.4f; Dennis & Chang (1970) at this Re %.4f (%+.2f %%)",
+                        U, drift, re, cd, ref, 100 * (cd / ref - 1)))
+    print(string.format("VALIDATION|fluid.ns_settling_inertial|Navier–Stokes model: disc settling at Re %.0f, "
+                        .. "drag coefficient|Dennis & Chang 1970 (steady cylinder, log-log between tabulated Re)|"
+                        .. "%.0f %%|C_D %.4f vs %.4f (%+.2f %%) at Re %.2f", re,
+                        100 * (P.tolerance > 0 and P.tolerance or 0.06), cd, ref, 100 * (cd / ref - 1), re))
+    porelab.chart { file = "settling_speed.png", title = "Disc settling in water: speed against time",
+                    xlabel = "time (s)", ylabel = "settling speed (m/s)", legend = "none",
+                    series = { { name = "settling speed", x = ts, y = us } } }
+    if P.tolerance > 0 then
+      assert(drift < 2e-3, string.format("not yet at its terminal speed: %.2g change over the last frames", drift))
+      assert(math.abs(cd / ref - 1) < P.tolerance,
+             string.format("C_D %.4f is %.2f %% from Dennis & Chang's %.4f (tolerance %.0f %%)", cd,
+                           100 * (cd / ref - 1), ref, 100 * P.tolerance))
+    end
+  end,
+}
