@@ -27,3 +27,6 @@ if(TARGET porelab)
   set_tests_properties(stokes_lua_api PROPERTIES LABELS "stokes;fluid" TIMEOUT 60
                        PASS_REGULAR_EXPRESSION "stokes lua api: [0-9]+ checks ok")
 endif()
+# The §5.1 disc with the hydrostatic and Darcy rungs as the benchmark sets them up: buoyancy
+# alone (Archimedes), and the Darcy fluid started from its static field, not from zero pressure.
+pl_add_c_test(test_stokes_rungs SOURCES ${PL_TEST_DIR}/stokes/test_stokes_rungs.c LABEL "stokes;fluid" TIMEOUT 60)
