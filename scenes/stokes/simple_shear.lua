@@ -26,7 +26,15 @@ local E_REST = math.exp(-math.pi * ZETA / math.sqrt(1 - ZETA * ZETA))
 local RHO_S = 2000
 local SIZES = { { 3, 1.5 * mm }, { 6, 1.0 * mm }, { 11, 0.5 * mm } }
 local SIGMA_V = 892.8e3                              -- Pa
-local RATE, GAMMA_END = 5, 0.125                     -- 1/s, shear strain
+-- Option (for tests): a global SIMPLE_SHEAR_BEM = { gamma_end = } set before the scene is loaded
+-- ends the shear early (tests/stokes/simple_shear_short.lua); the result is left in the global
+-- SIMPLE_SHEAR_BEM_RESULT = { sv0 =, rows = { {g =, ut =, ub =, drop =}, ... } }.
+local opt = rawget(_G, "SIMPLE_SHEAR_BEM") or {}
+local RATE, GAMMA_END = 5, opt.gamma_end or 0.125    -- 1/s, shear strain
+if type(GAMMA_END) ~= "number" or not (GAMMA_END > 0 and GAMMA_END <= 0.125) then
+  error(string.format("simple_shear: SIMPLE_SHEAR_BEM.gamma_end must be a shear strain in (0, 0.125] (got %s)",
+    tostring(opt.gamma_end)), 0)
+end
 local DT = 1.0e-6
 local W0, H0 = 10 * mm, 8 * mm
 local GAP = 0.1 * mm                                 -- artificial gap: the largest disc carries the whole lid, 41 um into it
@@ -197,11 +205,15 @@ return {
       return best and best[key] or 0 / 0
     end
     print("simple_shear (resolved fluid):   gamma   pore pressure top / bottom (kPa)   drop of sigma'_v dry CV (kPa)   difference / sigma'_v0")
-    for _, gq in ipairs { 0.02, 0.05, 0.08, 0.10, 0.125 } do
+    local rows = {}
+    for _, gq in ipairs { 0.01, 0.02, 0.03, 0.05, 0.08, 0.10, 0.125 } do
+      if gq > GAMMA_END + 1e-9 then break end
       local ut, ub, dr = at(gq, "ut"), at(gq, "ub"), at(gq, "drop")
+      rows[#rows + 1] = { g = gq, ut = ut, ub = ub, drop = dr }
       print(string.format("                                  %5.1f %%   %8.1f / %8.1f                 %8.1f                     %+7.3f",
         100 * gq, ut / 1e3, ub / 1e3, dr / 1e3, (ut - dr) / sv0))
     end
+    SIMPLE_SHEAR_BEM_RESULT = { sv0 = sv0, rows = rows }
     local series = {
       { name = "pore pressure on the top wall (resolved fluid)", x = G, y = UT, color = "#1f4e9c" },
       { name = "pore pressure on the bottom wall (resolved fluid)", x = G, y = UB, color = "#2a7f3f", style = "dashed" },
