@@ -240,7 +240,7 @@ int main(int argc, char **argv) {
     md(0, "| §5.1 disc: elements per disc | unknowns | CPU per solve | K/μ | K error vs Faxén (%.3f) |\n"
           "|---|---|---|---|---|\n", Kf / 50);
     for (int i = 0; i < NDISC; i++) {
-        pl_world *w = sc_world_box(-2.5, 2.5, -20, 20, -980, 5e-4, 2.0);
+        pl_world *w = sc_world_box(-2.5, 2.5, -20, 20, -980, 5e-4, 2.0, pl_default_material_def().friction);
         const int d = sc_world_disc(w, (pl_vec2){0, 0}, 0.5);
         pl_stokes_def sd = pl_default_stokes_def();
         sd.viscosity = 50;
@@ -284,7 +284,7 @@ int main(int argc, char **argv) {
         const double r = 0.01, side = sqrt(N * M_PI * r * r / 0.2);
         const int nx = (int)ceil(sqrt((double)N));
         const double pitch = side / nx;
-        pl_world *w = sc_world_box(0, side, 0, side, 0, 1e-4, 2650);
+        pl_world *w = sc_world_box(0, side, 0, side, 0, 1e-4, 2650, pl_default_material_def().friction);
         srand(7);
         for (int k = 0; k < N; k++) {
             const double jx = (rand() / (double)RAND_MAX - 0.5) * (pitch - 2.4 * r);

@@ -89,9 +89,10 @@ static inline double sc_takaisi(double k) {
 }
 
 /* A world with a closed box [x0, x1] x [y0, y1] of four fixed walls (bodies 0..3: bottom,
-   right, top, left; overlapping at the corners as scenes build them) and one material. */
+   right, top, left; overlapping at the corners as scenes build them) and one material (the
+   grains' density and friction; k_n = 1e6). */
 static inline pl_world *sc_world_box(double x0, double x1, double y0, double y1, double g, double dt,
-                                     double density) {
+                                     double density, double friction) {
     pl_world_def wd = pl_default_world_def();
     wd.energy_surge_ratio = 1e12; /* walls driving the fluid: see docs/stokes.md, Limits */
     wd.gravity = (pl_vec2){0, g};
@@ -101,6 +102,7 @@ static inline pl_world *sc_world_box(double x0, double x1, double y0, double y1,
     md.name = "grain";
     md.density = density;
     md.kn = 1e6;
+    md.friction = friction;
     pl_world_add_material(w, &md);
     const double e = 0.1 * (x1 - x0);
     const pl_vec2 seg[4][2] = {{{x0 - e, y0}, {x1 + e, y0}},
@@ -138,7 +140,7 @@ typedef enum { SC_RUNG_STOKES, SC_RUNG_HYDROSTATIC, SC_RUNG_DARCY } sc_rung;
    water column first drains downwards through the grain and drags it faster than free fall.
    Returns the world, the disc's body id in *disc and in *st the model's refusal (PL_OK). */
 static inline pl_world *sc_disc_rung(sc_rung m, int *disc, pl_status *st) {
-    pl_world *w = sc_world_box(-2.5, 2.5, -20, 20, -980, 5e-4, 2.0);
+    pl_world *w = sc_world_box(-2.5, 2.5, -20, 20, -980, 5e-4, 2.0, pl_default_material_def().friction);
     *disc = sc_world_disc(w, (pl_vec2){0, 0}, 0.5);
     *st = PL_OK;
     if (m == SC_RUNG_STOKES) {
