@@ -151,10 +151,13 @@ local function overlay()
     { text = "dry, constant volume", at = { dry.ox + W0 / 2, dry.oy - 1.4 * mm }, anchor = "center", size = 14 },
   }
   if h then
-    items[#items + 1] = { text = string.format("\u{03B3} = %.1f %%   pore pressure %.0f kPa   \u{03C3}\u{2032}\u{1D65} %.0f kPa",
-      100 * h.g, h.ut / 1e3, h.ss / 1e3), at = { sat.ox + W0 / 2, sat.oy + 10.6 * mm }, anchor = "center", size = 13 }
+    -- two short lines above each box, clear of its leaning side walls
+    items[#items + 1] = { text = string.format("\u{03B3} = %.1f %%", 100 * h.g),
+      at = { sat.ox + W0 / 2, sat.oy + 10.8 * mm }, anchor = "center", size = 13 }
+    items[#items + 1] = { text = string.format("pore pressure %.0f kPa, \u{03C3}\u{2032}\u{1D65} %.0f kPa", h.ut / 1e3, h.ss / 1e3),
+      at = { sat.ox + W0 / 2, sat.oy + 10.1 * mm }, anchor = "center", size = 13 }
     items[#items + 1] = { text = string.format("\u{03C3}\u{2032}\u{1D65} %.0f kPa (drop %.0f kPa)", h.sd / 1e3, h.drop / 1e3),
-      at = { dry.ox + W0 / 2, dry.oy + 10.6 * mm }, anchor = "center", size = 13 }
+      at = { dry.ox + W0 / 2, dry.oy + 10.1 * mm }, anchor = "center", size = 13 }
   end
   return items
 end
@@ -186,7 +189,7 @@ return {
     layers = "bodies,forces,pressure,velocity,colorbar,scalebar,title,time,overlay",
     fluid_field = "pressure", fluid_range = { 0, 800e3 }, velocity_scale = 0.02, time_offset = -T0,
     colors = { grain = "#c9b48a", wall = "#2f2f2f" }, force_color = "#9b2226", force_max_width = 4,
-    title = "Simple shear of a 20-disc sample (Tan 1990): saturated, pore water resolved, and dry at constant volume",
+    title = "Simple shear of 20 discs: saturated (pore water resolved) and dry at constant volume",
     overlay = overlay,
   },
   on_frame = record,
