@@ -227,7 +227,7 @@ int main(int argc, char **argv) {
         e1[i] = fabs(T1[i] / Tref - 1);
         printf("  %13d  %8d  %17.3f  %9.5f  %.2e\n", (int)(64 * sc[i]), s.n, c1[i], T1[i], e1[i]);
         fprintf(csv, "cylinder_4.4.1,%d,%d,%.6g,%.8g,%.6g\n", (int)(64 * sc[i]), s.n, c1[i], T1[i], e1[i]);
-        md(1, "| %d | %d | %.2g s | %.3f | %.1e |\n", (int)(64 * sc[i]), s.n, c1[i], T1[i], e1[i]);
+        md(1, "| %d | %d | %.3g s | %.3f | %.1e |\n", (int)(64 * sc[i]), s.n, c1[i], T1[i], e1[i]);
     }
     pl_sb_solver_free(&s);
 
@@ -260,7 +260,7 @@ int main(int argc, char **argv) {
         e2[i] = fabs(r.k_trans / Kf - 1);
         printf("  %13d  %8d  %17.3f  %8.4f  %.2e\n", nd[i], pl_world_stokes_unknowns(w), c2[i], r.k_trans / 50, e2[i]);
         fprintf(csv, "disc_5.1,%d,%d,%.6g,%.8g,%.6g\n", nd[i], pl_world_stokes_unknowns(w), c2[i], r.k_trans / 50, e2[i]);
-        md(0, "| %d | %d | %.2g s | %.3f | %.1e |\n", nd[i], pl_world_stokes_unknowns(w), c2[i], r.k_trans / 50, e2[i]);
+        md(0, "| %d | %d | %.3g s | %.3f | %.1e |\n", nd[i], pl_world_stokes_unknowns(w), c2[i], r.k_trans / 50, e2[i]);
         pl_world_destroy(&w);
     }
 #if PL_STOKES_CHART
@@ -314,7 +314,7 @@ int main(int argc, char **argv) {
         lnT[q] = log(t);
         printf("  %5d  %8d  %16.3f  %17.2f  %16.2f\n", N, n, t, gb, peak);
         fprintf(csv, "step_cost,%d,%d,%.6g,%d,\n", 16, n, t, N);
-        md(2, "| %d | %d | %.2g s%s | %.2g GB | %.2g GB |\n", N, n, t, N >= 400 ? " (the first step)" : "", gb, peak);
+        md(2, "| %d | %d | %.3g s%s | %.2g GB | %.2g GB |\n", N, n, t, N >= 400 ? " (the first step, with the container's factor)" : "", gb, peak);
         pl_world_destroy(&w);
     }
     if (nq >= 2) {
@@ -361,7 +361,7 @@ int main(int argc, char **argv) {
                 snprintf(wrong, sizeof wrong, "buoyancy only: the disc falls freely at (1 − ρ_l/ρ_s) g, %.2f cm/s at 0.03 s",
                          vfree);
             else if (m == 2)
-                snprintf(wrong, sizeof wrong, "the same as hydrostatic (%+.1e of it): without consolidation a single moving "
+                snprintf(wrong, sizeof wrong, "the same as hydrostatic (relative difference %.1e): without consolidation a single moving "
                          "grain drives no flow, so nothing but buoyancy acts on it", v / vfree - 1);
             else
                 snprintf(wrong, sizeof wrong, "the water column first drains downwards through the grain and drags it "
