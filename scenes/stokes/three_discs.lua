@@ -111,9 +111,13 @@ return {
       xt[k] = { name = string.format("disc %d", k), x = hist.t, y = xs, color = COLORS[k] }
       yt[k] = { name = string.format("disc %d", k), x = hist.t, y = hist.vy[k], color = COLORS[k] }
     end
-    porelab.chart { file = "three_discs_trajectories.png", title = "Three sedimenting discs: trajectories (Tan 1990, §5.2)",
+    -- x range: the data and 1 cm on either side (the curves do not run along the frame); the
+    -- legend bottom left, where no disc passes (disc 1 keeps right of x = 119 cm below 2.5 m)
+    local xlo, xhi = math.huge, -math.huge
+    for k = 1, 3 do for _, x in ipairs(tr[k].x) do xlo, xhi = math.min(xlo, x), math.max(xhi, x) end end
+    porelab.chart { file = "three_discs_trajectories.png", title = "Three sedimenting discs: trajectories (Tan 1990, section 5.2)",
                     xlabel = "x (cm; horizontal scale exaggerated)", ylabel = "height y (m)", series = tr,
-                    legend = "bottom right" }
+                    xrange = { math.floor(xlo) - 1, math.ceil(xhi) + 1 }, legend = "bottom left" }
     porelab.chart { file = "three_discs_x.png", title = "Three sedimenting discs: horizontal position",
                     xlabel = "time (s)", ylabel = "x (cm)", series = xt, legend = "top right" }
     porelab.chart { file = "three_discs_fall_speed.png", title = "Three sedimenting discs: fall speed",

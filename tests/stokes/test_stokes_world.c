@@ -24,27 +24,10 @@ static int add_wall(pl_world *w, pl_vec2 a, pl_vec2 b) {
 /* World with a closed box [x0, x1] x [y0, y1] of four fixed walls (bodies 0..3: bottom, right,
    top, left), walls overlapping at the corners as scenes build them. */
 static pl_world *box_world(double x0, double x1, double y0, double y1, double g, double dt, double density) {
-    pl_world_def wd = pl_default_world_def();
     /* a wall that drives the fluid supplies energy the grain ledger does not see (the energy
-       guard's budget counts work on grains only): the guard is left to the overlap and NaN
-       checks here (docs/stokes.md) */
-    wd.energy_surge_ratio = 1e12;
-    wd.gravity = (pl_vec2){0, g};
-    wd.dt = dt;
-    pl_world *w = pl_world_create(&wd);
-    pl_material_def md = pl_default_material_def();
-    md.name = "grain";
-    md.density = density;
-    md.kn = 1e6;
-    md.friction = 0.3;
-    pl_world_add_material(w, &md);
-    const double e = 0.1 * (x1 - x0);
-    const pl_vec2 seg[4][2] = {{{x0 - e, y0}, {x1 + e, y0}},
-                               {{x1, y0 - e}, {x1, y1 + e}},
-                               {{x1 + e, y1}, {x0 - e, y1}},
-                               {{x0, y1 + e}, {x0, y0 - e}}};
-    for (int k = 0; k < 4; k++) add_wall(w, seg[k][0], seg[k][1]);
-    return w;
+       guard's budget counts work on grains only): sc_world_box leaves the guard to the overlap
+       and NaN checks (docs/stokes.md) */
+    return sc_world_box(x0, x1, y0, y1, g, dt, density, 0.3);
 }
 
 static int add_disc(pl_world *w, pl_vec2 c, double r, pl_motion_type motion) {
