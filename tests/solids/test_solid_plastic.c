@@ -12,7 +12,9 @@
  *   equivalent strain is (2 / sqrt 3) eps_xx; with linear hardening, past yield
  *   sigma_eq = sigma_y + H eps_p, eps_p = 3G / (3G + H) (eps_eq - sigma_y / (3G)) (the same
  *   closed form as above, Simo & Hughes §3.3). The force on the pulled edge over the width
- *   follows it within 1 % (FIC triangles and Q1/P0), the equivalent plastic strain within 1 %;
+ *   follows it within 1 % (FIC triangles and Q1/P0), the equivalent plastic strain within 1 %,
+ *   and the plastic-work tally within 1 % of the closed form over the strip's area A:
+ *   W_p = A int sigma_eq d eps_p = A (sigma_y eps_p + H eps_p^2 / 2);
  * - rigid smooth strip punch on a rigid-perfectly plastic half-space (plane strain, von Mises,
  *   c = sigma_y / sqrt 3): Prandtl's limit pressure q = (2 + pi) c (Prandtl 1920; Hill, The
  *   Mathematical Theory of Plasticity, §VIII.2), E / c = 1000, nu = 0.49, half model (symmetry
@@ -107,7 +109,8 @@ static int test_rigid_rotation(void) {
 
 /* Strip [0, L] x [0, W]: x fixed at x = 0, y fixed at the corner (0, 0), the edge x = L pulled
    at a smoothly started constant speed. */
-static int strip_case(int form, double *worst_s, double *worst_p, double *s_end, double *s_ref_end) {
+static int strip_case(int form, double *worst_s, double *worst_p, double *s_end, double *s_ref_end, double *wp_end,
+                      double *wp_ref_end) {
     pl_solid_def d = pl_default_solid_def();
     d.young = 1000;
     d.poisson = 0.4999;
@@ -147,6 +150,9 @@ static int strip_case(int form, double *worst_s, double *worst_p, double *s_end,
         *worst_p = fmax(*worst_p, fabs(ep_fe - ep) / ep);
         *s_end = sxx;
         *s_ref_end = sref;
+        /* plastic work over the strip's area: int sigma_eq d eps_p = sigma_y eps_p + H eps_p^2 / 2 */
+        *wp_end = s->e.plastic;
+        *wp_ref_end = L * W * (sy * ep + 0.5 * H * ep * ep);
     }
     pl_sf_destroy(s);
     return 0;
@@ -156,8 +162,8 @@ static int test_strip_tension(void) {
     const int forms[2] = {PL_SOLID_FIC_SEMI_IMPLICIT, PL_SOLID_Q1P0};
     const char *names[2] = {"FIC", "Q1/P0"};
     for (int f = 0; f < 2; f++) {
-        double ws = 0, wp = 0, se = 0, sr = 0;
-        ENSURE(strip_case(forms[f], &ws, &wp, &se, &sr) == 0);
+        double ws = 0, wp = 0, se = 0, sr = 0, we = 0, wr = 0;
+        ENSURE(strip_case(forms[f], &ws, &wp, &se, &sr, &we, &wr) == 0);
         fprintf(stderr, "strip in tension (%s, nu = 0.4999): sigma_xx at eps_xx = 6e-3: %.5f (closed form %.5f); worst "
                         "error past yield: stress %.2e, plastic strain %.2e\n",
                 names[f], se, sr, ws, wp);
@@ -166,6 +172,12 @@ static int test_strip_tension(void) {
                       "%s: stress %.2g %%, plastic strain %.2g %%", names[f], 100 * ws, 100 * wp);
         ENSURE(ws < 0.01);
         ENSURE(wp < 0.01);
+        /* the plastic-work tally (pl_solid_energy.plastic) against the closed form */
+        const double ew = (we - wr) / wr;
+        fprintf(stderr, "strip in tension (%s): plastic work %.6g J/m (closed form %.6g, %+.2e)\n", names[f], we, wr, ew);
+        pl_validation("solids.strip_work", "plane-strain strip in uniaxial tension: plastic work to 7 x yield",
+                      "A (sigma_y eps_p + H eps_p^2 / 2), closed form", "1 %", "%s: %+.2g %%", names[f], 100 * ew);
+        ENSURE(fabs(ew) < 0.01);
     }
     return 0;
 }
