@@ -50,7 +50,8 @@ pl_energy pl_world_energy(const pl_world *w) {
     e.damped = w->e_damped;
     e.friction = w->e_friction;
     e.fracture = w->e_fracture;
-    e.external = w->e_external;
+    /* the loads' work tally runs to the half step t_n + dt/2 (dem/integrate.c): back to t_n */
+    e.external = w->e_external - (synced(w) ? w->e_ext_half : 0);
     e.balance = e.kinetic + e.gravitational + e.elastic + e.damped + e.friction + e.fracture - e.external -
                 (w->energy_initialised ? w->e_initial : e.kinetic + e.gravitational + e.elastic + e.damped +
                                                             e.friction + e.fracture - e.external);

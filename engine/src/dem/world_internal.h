@@ -160,6 +160,9 @@ struct pl_world {
 
     /* energy tallies (J) */
     double e_damped, e_friction, e_external, e_initial;
+    double e_ext_half;            /* the last step's load work over its second half step,
+                                     F_n . v_{n+1/2} dt / 2: e_external runs half a step past the
+                                     reported time t_n (dem/integrate.c, dem/diagnostics.c) */
     double e_models;              /* energy the attached models hold (world/models.c), for the surge guard */
     int energy_initialised;
     double ke_prev;
