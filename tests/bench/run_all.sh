@@ -47,7 +47,7 @@ if [ "$what" = all ] || [ "$what" = render ]; then
   fi
 fi
 if [ "$what" = all ] || [ "$what" = solid ]; then
-  cmake --build "$build" -j2 --target bench_solid >/dev/null 2>&1 || true
+  cmake --build "$build" -j2 --target bench_solid >/dev/null
   if [ -x "$build/tests/bench_solid" ]; then
     echo "== finite-element solid: element-steps/s, FIC against plain; coupled cutting cost =="
     (cd "$out" && "$build/tests/bench_solid" 20 2000 "$out/solid.md") | tee "$out/solid.txt"
