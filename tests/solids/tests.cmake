@@ -19,7 +19,7 @@ if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1")
 endif()
 # Scenes of scenes/solids/ run to their end (imperative scripts with their own asserts).
 if("${_pl_engine_defs}" MATCHES "PL_HAVE_GMSH=1" AND TARGET porelab)
-  foreach(scene cutting cutting_frames projectile buried_pipe mesh_file)
+  foreach(scene cutting cutting_frames projectile buried_pipe mesh_file glued_layer)
     add_test(NAME solid_scene_${scene} COMMAND porelab run ${CMAKE_SOURCE_DIR}/scenes/solids/${scene}.lua -q
              --out ${CMAKE_CURRENT_BINARY_DIR}/solids-out/${scene})
     set_tests_properties(solid_scene_${scene} PROPERTIES LABELS solids TIMEOUT 120)
