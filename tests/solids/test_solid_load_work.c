@@ -167,11 +167,7 @@ static int test_model_spring(void) {
 }
 
 static int test_bar_traction(void) {
-    pl_solid_def d = pl_default_solid_def();
-    d.young = 200e9;
-    d.poisson = 0.3;
-    d.density = 7800;
-    d.formulation = PL_SOLID_PLAIN;
+    const pl_solid_def d = sf_steel(PL_SOLID_PLAIN);
     const double L = 10, H = 1, t = 1e6;
     pl_sf *s = sf_rect(&d, 0, 0, L, H, 40, 4);
     ENSURE(s);

@@ -256,6 +256,8 @@ pl_status pl__check_guards(pl_world *w);
 /* Energy */
 double pl__kinetic_energy(const pl_world *w);
 double pl__elastic_energy(const pl_world *w);
+/* Work done on the system up to the reported time t_n (e_external less the last half step). */
+double pl__external_work(const pl_world *w);
 double pl__gravitational_energy(const pl_world *w);
 
 
