@@ -23,6 +23,10 @@ static double now(void) {
 }
 
 /* The cutting scene of scenes/solids/cutting.lua: grains, then the tool; cost split. */
+/* argv[3]: a Markdown file that receives both tables (docs/solids.md, "Cost", through
+   tests/bench/run_all.sh solid) */
+static FILE *table_md;
+
 static int coupled(int steps) {
     pl_world_def wd = pl_default_world_def();
     wd.gravity = (pl_vec2){0, -9.81};
@@ -93,6 +97,18 @@ static int coupled(int steps) {
     const double total = now() - t0;
     pl_world_solid_cost(w, &s1, &c1);
     const double fe = s1 - s0, ct = c1 - c0;
+    if (table_md) {
+        fprintf(table_md, "\nCoupled cost of the cutting scene built in C (%d grains, %d elasto-plastic triangles in updated "
+                    "Lagrangian form), %d steps:\n\n",
+                grains, pl_world_solid_element_count(w), steps);
+        fprintf(table_md, "| part | ms per step | share |\n|---|---|---|\n");
+        fprintf(table_md, "| grains (contacts, integration, guards) | %.3f | %.0f %% |\n", 1e3 * (total - fe - ct) / steps,
+                100 * (total - fe - ct) / total);
+        fprintf(table_md, "| solid (FIC pressure: S refactorised each step, stress update, forces) | %.3f | %.0f %% |\n",
+                1e3 * fe / steps, 100 * fe / total);
+        fprintf(table_md, "| grain–edge contact (search and forces) | %.3f | %.0f %% |\n", 1e3 * ct / steps, 100 * ct / total);
+        fprintf(table_md, "| total | %.3f | |\n", 1e3 * total / steps);
+    }
     printf("\ncutting scene (%d grains, %d triangles), %d steps: %.3g ms per step = grains %.3g ms (%.0f %%), "
            "solid %.3g ms (%.0f %%), contact %.3g ms (%.0f %%)\n",
            grains, pl_world_solid_element_count(w), steps, 1e3 * total / steps, 1e3 * (total - fe - ct) / steps,
@@ -103,6 +119,12 @@ static int coupled(int steps) {
 
 int main(int argc, char **argv) {
     const int steps = argc > 1 ? atoi(argv[1]) : 200;
+    if (argc > 3 && !(table_md = fopen(argv[3], "w"))) {
+        fprintf(stderr, "bench_solid: cannot write the table file '%s' (argument 3)\n", argv[3]);
+        return 1;
+    }
+    double rate_of[2][4];
+    int ne_of[2][4];
     const int forms[4] = {PL_SOLID_PLAIN, PL_SOLID_FIC_EXPLICIT, PL_SOLID_FIC_SEMI_IMPLICIT, PL_SOLID_Q1P0};
     const char *names[4] = {"plain", "fic_explicit", "fic_semi_implicit", "q1p0"};
     const int sizes[2][2] = {{100, 50}, {316, 158}};
@@ -144,8 +166,19 @@ int main(int argc, char **argv) {
             const double sec = now() - t0, rate = (double)s->ne * steps / sec;
             printf("%-18s %9d %7d %9.3f %14.3e\n", names[f], s->ne, steps, sec, rate);
             if (csv) fprintf(csv, "%s,%d,%d,%.6f,%.6e\n", names[f], s->ne, steps, sec, rate);
+            rate_of[z][f] = rate;
+            ne_of[z][f] = s->ne;
             pl_sf_destroy(s);
         }
     if (csv) fclose(csv);
-    return coupled(argc > 2 ? atoi(argv[2]) : 3000);
+    if (table_md) {
+        fprintf(table_md, "Element-steps per second (one core, %d steps after the first; a plane-strain block sheared "
+                    "from rest, small strain):\n\n", steps);
+        fprintf(table_md, "| formulation | elements | element-steps/s | elements | element-steps/s |\n|---|---|---|---|---|\n");
+        for (int f = 0; f < 4; f++)
+            fprintf(table_md, "| %s | %d | %.3g | %d | %.3g |\n", names[f], ne_of[0][f], rate_of[0][f], ne_of[1][f], rate_of[1][f]);
+    }
+    const int rc = coupled(argc > 2 ? atoi(argv[2]) : 3000);
+    if (table_md) fclose(table_md);
+    return rc;
 }

@@ -4,6 +4,7 @@
 # run in the same session, so the ratios compare like with like.
 #   tests/bench/run_all.sh            # everything (about 15 minutes on 2 cores)
 #   tests/bench/run_all.sh dem        # only the grain engine against LIGGGHTS
+#   tests/bench/run_all.sh solid      # only the finite-element solid (rewrites docs/solids.md's tables)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
@@ -43,6 +44,18 @@ if [ "$what" = all ] || [ "$what" = render ]; then
   if [ -x "$build/tests/bench_render" ]; then
     echo "== rendering =="
     "$build/tests/bench_render" | tee "$out/render.txt"
+  fi
+fi
+if [ "$what" = all ] || [ "$what" = solid ]; then
+  cmake --build "$build" -j2 --target bench_solid >/dev/null
+  if [ -x "$build/tests/bench_solid" ]; then
+    echo "== finite-element solid: element-steps/s, FIC against plain; coupled cutting cost =="
+    (cd "$out" && "$build/tests/bench_solid" 20 2000 "$out/solid.md") | tee "$out/solid.txt"
+    # the tables of docs/solids.md ("Cost") are this run's own output
+    awk -v md="$out/solid.md" '
+      /<!-- bench_solid:begin/ { print; while ((getline line < md) > 0) print line; skip = 1; next }
+      /<!-- bench_solid:end/ { skip = 0 }
+      !skip { print }' "$top/docs/solids.md" > "$top/docs/solids.md.tmp" && mv "$top/docs/solids.md.tmp" "$top/docs/solids.md"
   fi
 fi
 echo "results in $out"

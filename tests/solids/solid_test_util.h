@@ -7,6 +7,16 @@
 #include <math.h>
 #include <stdio.h>
 
+/* Steel: E = 200 GPa, nu = 0.3, rho = 7800 kg/m^3, in the given formulation. */
+static inline pl_solid_def sf_steel(int form) {
+    pl_solid_def d = pl_default_solid_def();
+    d.young = 200e9;
+    d.poisson = 0.3;
+    d.density = 7800;
+    d.formulation = form;
+    return d;
+}
+
 static inline pl_sf *sf_from_quad(const pl_solid_def *d, pl_vec2 c0, pl_vec2 c1, pl_vec2 c2, pl_vec2 c3, int nx, int ny) {
     const pl_vec2 c[4] = {c0, c1, c2, c3};
     pl_sf_mesh m;

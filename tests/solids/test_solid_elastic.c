@@ -19,17 +19,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static pl_solid_def steel(int form) {
-    pl_solid_def d = pl_default_solid_def();
-    d.young = 200e9;
-    d.poisson = 0.3;
-    d.density = 7800;
-    d.formulation = form;
-    return d;
-}
-
 static int wave_case(int form) {
-    pl_solid_def d = steel(form);
+    pl_solid_def d = sf_steel(form);
     const double L = 100, H = 1;
     pl_sf *s = sf_rect(&d, 0, 0, L, H, 400, 4);
     ENSURE(s);
@@ -205,7 +196,7 @@ static int test_explicit_refused(void) {
 }
 
 static int test_step_past_critical(void) {
-    pl_solid_def d = steel(PL_SOLID_PLAIN);
+    pl_solid_def d = sf_steel(PL_SOLID_PLAIN);
     pl_sf *s = sf_rect(&d, 0, 0, 1, 0.2, 10, 2);
     ENSURE(s);
     ENSURE(pl_sf_step(s, 1.01 * s->dt_crit, NULL) == PL_ERR_UNSTABLE);

@@ -12,15 +12,20 @@
  *   equivalent strain is (2 / sqrt 3) eps_xx; with linear hardening, past yield
  *   sigma_eq = sigma_y + H eps_p, eps_p = 3G / (3G + H) (eps_eq - sigma_y / (3G)) (the same
  *   closed form as above, Simo & Hughes §3.3). The force on the pulled edge over the width
- *   follows it within 1 % (FIC triangles and Q1/P0), the equivalent plastic strain within 1 %;
+ *   follows it within 1 % (FIC triangles and Q1/P0), the equivalent plastic strain within 1 %,
+ *   and the plastic-work tally within 1 % of the closed form over the strip's area A:
+ *   W_p = A int sigma_eq d eps_p = A (sigma_y eps_p + H eps_p^2 / 2);
  * - rigid smooth strip punch on a rigid-perfectly plastic half-space (plane strain, von Mises,
  *   c = sigma_y / sqrt 3): Prandtl's limit pressure q = (2 + pi) c (Prandtl 1920; Hill, The
  *   Mathematical Theory of Plasticity, §VIII.2), E / c = 1000, nu = 0.49, half model (symmetry
  *   at x = 0) [0, 6] x [-6, 0] with the punch half-width 1, the punch a prescribed vertical
  *   velocity on the nodes under it (free horizontally: smooth), the load read after a hold at
- *   rest; meshes 24x24 and 48x48: Q1/P0 within 5 % on 48x48, FIC triangles within 10 %, both
- *   extrapolated (first order: the punch corner is singular) within 3 %. Over 20 s: run only
- *   with the argument "punch" (ctest test_solid_punch, label long). */
+ *   rest; meshes 24x24 and 48x48 graded towards the punch (a third of the divisions uniform
+ *   over x in [0, 1] and the top unit depth, growing geometrically beyond): Q1/P0 and FIC
+ *   triangles within 5 % on 48x48, both extrapolated (first order: the punch corner is
+ *   singular) within 3 %. The uniform 48x48 mesh (8 elements under the half-punch, the same
+ *   element count) gave FIC +6.9 % and Q1/P0 +3.3 %: the error sits at the punch corner. Over
+ *   a minute: run only with the argument "punch" (ctest test_solid_punch, label long). */
 #include "harness.h"
 #include "solid_test_util.h"
 #include <stdlib.h>
@@ -107,7 +112,8 @@ static int test_rigid_rotation(void) {
 
 /* Strip [0, L] x [0, W]: x fixed at x = 0, y fixed at the corner (0, 0), the edge x = L pulled
    at a smoothly started constant speed. */
-static int strip_case(int form, double *worst_s, double *worst_p, double *s_end, double *s_ref_end) {
+static int strip_case(int form, double *worst_s, double *worst_p, double *s_end, double *s_ref_end, double *wp_end,
+                      double *wp_ref_end) {
     pl_solid_def d = pl_default_solid_def();
     d.young = 1000;
     d.poisson = 0.4999;
@@ -147,6 +153,9 @@ static int strip_case(int form, double *worst_s, double *worst_p, double *s_end,
         *worst_p = fmax(*worst_p, fabs(ep_fe - ep) / ep);
         *s_end = sxx;
         *s_ref_end = sref;
+        /* plastic work over the strip's area: int sigma_eq d eps_p = sigma_y eps_p + H eps_p^2 / 2 */
+        *wp_end = s->e.plastic;
+        *wp_ref_end = L * W * (sy * ep + 0.5 * H * ep * ep);
     }
     pl_sf_destroy(s);
     return 0;
@@ -156,8 +165,8 @@ static int test_strip_tension(void) {
     const int forms[2] = {PL_SOLID_FIC_SEMI_IMPLICIT, PL_SOLID_Q1P0};
     const char *names[2] = {"FIC", "Q1/P0"};
     for (int f = 0; f < 2; f++) {
-        double ws = 0, wp = 0, se = 0, sr = 0;
-        ENSURE(strip_case(forms[f], &ws, &wp, &se, &sr) == 0);
+        double ws = 0, wp = 0, se = 0, sr = 0, we = 0, wr = 0;
+        ENSURE(strip_case(forms[f], &ws, &wp, &se, &sr, &we, &wr) == 0);
         fprintf(stderr, "strip in tension (%s, nu = 0.4999): sigma_xx at eps_xx = 6e-3: %.5f (closed form %.5f); worst "
                         "error past yield: stress %.2e, plastic strain %.2e\n",
                 names[f], se, sr, ws, wp);
@@ -166,12 +175,42 @@ static int test_strip_tension(void) {
                       "%s: stress %.2g %%, plastic strain %.2g %%", names[f], 100 * ws, 100 * wp);
         ENSURE(ws < 0.01);
         ENSURE(wp < 0.01);
+        /* the plastic-work tally (pl_solid_energy.plastic) against the closed form */
+        const double ew = (we - wr) / wr;
+        fprintf(stderr, "strip in tension (%s): plastic work %.6g J/m (closed form %.6g, %+.2e)\n", names[f], we, wr, ew);
+        pl_validation("solids.strip_work", "plane-strain strip in uniaxial tension: plastic work to 7 x yield",
+                      "A (sigma_y eps_p + H eps_p^2 / 2), closed form", "1 %", "%s: %+.2g %%", names[f], 100 * ew);
+        ENSURE(fabs(ew) < 0.01);
     }
     return 0;
 }
 
-/* Prandtl punch: half model [0, 6] x [-6, 0], punch half-width 1 (B = 2). Returns q = R / (B/2). */
-static int punch_case(int form, int n, double *q, double *q_push) {
+/* Node positions 0 = x_0 < ... < x_n = L along one side: uniform (grade = 0), or with the first
+   n_a = n / 3 divisions uniform over [0, a] and the rest growing geometrically from that size
+   over [a, L] (grade = 1). */
+static void graded_line(int n, double a, double L, int grade, double *x) {
+    if (!grade) {
+        for (int i = 0; i <= n; i++) x[i] = L * i / n;
+        return;
+    }
+    const int na = n / 3, m = n - na;
+    const double h = a / na;
+    double lo = 1, hi = 2; /* ratio r: h (r^m - 1) / (r - 1) = L - a */
+    for (int it = 0; it < 200; it++) {
+        const double r = 0.5 * (lo + hi);
+        if (h * (pow(r, m) - 1) / (r - 1) > L - a) hi = r;
+        else lo = r;
+    }
+    const double r = 0.5 * (lo + hi);
+    for (int i = 0; i <= na; i++) x[i] = a * i / na;
+    for (int j = 1; j <= m; j++) x[na + j] = a + h * (pow(r, j) - 1) / (r - 1);
+    x[n] = L;
+}
+
+/* Prandtl punch: half model [0, 6] x [-6, 0], punch half-width 1 (B = 2). Returns q = R / (B/2).
+   grade = 1: a third of the divisions uniform under the half-punch (x in [0, 1]) and, downwards,
+   over the top unit depth, growing geometrically beyond (graded_line). */
+static int punch_case(int form, int n, int grade, double *q, double *q_push) {
     pl_solid_def d = pl_default_solid_def();
     const double c = 10;
     d.young = 1000 * c;
@@ -181,7 +220,27 @@ static int punch_case(int form, int n, double *q, double *q_push) {
     d.yield_stress = sqrt(3.0) * c;
     d.hardening = 0;
     d.damping = 5;
-    pl_sf *s = sf_rect(&d, 0, -6, 6, 0, n, n);
+    pl_sf *s = NULL;
+    {
+        const pl_vec2 c[4] = {{0, -6}, {6, -6}, {6, 0}, {0, 0}};
+        pl_sf_mesh m;
+        char msg[320];
+        ENSURE(pl_sf_mesh_quad(c, n, n, form == PL_SOLID_Q1P0, &m, msg, sizeof msg) == PL_OK);
+        double *gx = malloc(sizeof *gx * (size_t)(n + 1)), *gy = malloc(sizeof *gy * (size_t)(n + 1));
+        ENSURE(gx && gy);
+        graded_line(n, 1, 6, grade, gx);
+        graded_line(n, 1, 6, grade, gy); /* depth below the surface */
+        for (int i = 0; i < m.nn; i++) { /* the structured nodes lie on the uniform grid */
+            const int ix = (int)lround(m.xy[2 * i] / 6 * n), iy = (int)lround(-m.xy[2 * i + 1] / 6 * n);
+            m.xy[2 * i] = gx[ix];
+            m.xy[2 * i + 1] = -gy[iy];
+        }
+        free(gx);
+        free(gy);
+        s = pl_sf_create(&d, &m, msg, sizeof msg);
+        pl_sf_mesh_free(&m);
+        if (!s) fprintf(stderr, "%s\n", msg);
+    }
     ENSURE(s);
     ENSURE(pl_sf_add_set(s, -1e-9, -7, 1e-9, 1, 1, 0, 0) >= 0);   /* symmetry */
     ENSURE(pl_sf_add_set(s, 6 - 1e-9, -7, 6 + 1e-9, 1, 1, 0, 0) >= 0); /* far side: rollers */
@@ -210,24 +269,24 @@ static int test_prandtl_punch(void) {
     for (int f = 0; f < 2; f++) {
         for (int m = 0; m < 2; m++) {
             const int n = m ? 48 : 24;
-            ENSURE(punch_case(forms[f], n, &q[f][m], &qp[f][m]) == 0);
-            fprintf(stderr, "Prandtl punch (%s, %dx%d, punch half-width = %d elements): q = %.3f after the hold (%.3f "
-                            "while pushing); (2 + pi) c = %.3f (%+.2f %%)\n",
-                    names[f], n, n, n / 6, q[f][m], qp[f][m], qref, 100 * (q[f][m] - qref) / qref);
+            ENSURE(punch_case(forms[f], n, 1, &q[f][m], &qp[f][m]) == 0);
+            fprintf(stderr, "Prandtl punch (%s, %dx%d graded, punch half-width = %d elements): q = %.3f after the hold "
+                            "(%.3f while pushing); (2 + pi) c = %.3f (%+.2f %%)\n",
+                    names[f], n, n, n / 3, q[f][m], qp[f][m], qref, 100 * (q[f][m] - qref) / qref);
         }
         ext[f] = 2 * q[f][1] - q[f][0]; /* Richardson, first order (the corner singularity) */
         fprintf(stderr, "Prandtl punch (%s): extrapolated (order 1) %.3f (%+.2f %%)\n", names[f], ext[f],
                 100 * (ext[f] - qref) / qref);
         pl_validation("solids.prandtl",
-                      "rigid smooth strip punch, rigid-perfectly plastic von Mises, E/c = 1000, nu = 0.49, 24x24 / 48x48",
-                      "Prandtl q = (2 + pi) c", "Q1/P0 5 % on 48x48, FIC 10 %; extrapolated 3 %",
+                      "rigid smooth strip punch, rigid-perfectly plastic von Mises, E/c = 1000, nu = 0.49, graded 24x24 / 48x48",
+                      "Prandtl q = (2 + pi) c", "5 % on 48x48; extrapolated 3 %",
                       "%s: %.2f / %.2f vs %.2f (%+.1f %% on 48x48), extrapolated %+.1f %%", names[f], q[f][0],
                       q[f][1], qref, 100 * (q[f][1] - qref) / qref, 100 * (ext[f] - qref) / qref);
         ENSURE(q[f][1] < q[f][0]);
         ENSURE_REL(ext[f], qref, 0.03);
     }
     ENSURE_REL(q[1][1], qref, 0.05);
-    ENSURE_REL(q[0][1], qref, 0.10);
+    ENSURE_REL(q[0][1], qref, 0.05);
     return 0;
 }
 

@@ -17,7 +17,7 @@ set(PL_VALIDATION_TESTS
   test_ns_validation_plates test_ns_world_long
   test_soil_terzaghi test_soil_undrained test_soil_overburden test_soil_quicksand soil_consolidation_short
   soil_consolidation soil_liquefaction soil_simple_shear soil_simple_shear_uncoupled soil_simple_shear_full
-  test_solid_elastic test_solid_lame test_solid_plastic test_solid_world test_solid_cook test_solid_punch)
+  test_solid_elastic test_solid_lame test_solid_plastic test_solid_world test_solid_load_work test_solid_cook test_solid_punch)
 set(PL_VALIDATION_LONG soil_consolidation soil_liquefaction soil_simple_shear_full test_ns_world_long test_solid_punch)
 set(_pl_vt "")
 foreach(t IN LISTS PL_VALIDATION_TESTS)

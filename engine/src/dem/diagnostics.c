@@ -40,6 +40,9 @@ double pl__gravitational_energy(const pl_world *w) {
     return e;
 }
 
+/* the loads' work tally runs to the half step t_n + dt/2 (dem/integrate.c): back to t_n */
+double pl__external_work(const pl_world *w) { return w->e_external - (synced(w) ? w->e_ext_half : 0); }
+
 double pl__elastic_energy(const pl_world *w) { return w->bond_n ? w->e_elastic + w->e_bond : w->e_elastic; }
 
 pl_energy pl_world_energy(const pl_world *w) {
@@ -50,7 +53,7 @@ pl_energy pl_world_energy(const pl_world *w) {
     e.damped = w->e_damped;
     e.friction = w->e_friction;
     e.fracture = w->e_fracture;
-    e.external = w->e_external;
+    e.external = pl__external_work(w);
     e.balance = e.kinetic + e.gravitational + e.elastic + e.damped + e.friction + e.fracture - e.external -
                 (w->energy_initialised ? w->e_initial : e.kinetic + e.gravitational + e.elastic + e.damped +
                                                             e.friction + e.fracture - e.external);

@@ -26,6 +26,11 @@ static inline void guide_velocity(const pl_world *w, int i, pl_vec2 *v) {
     *v = (pl_vec2){s * u.x, s * u.y};
 }
 
+/* Power of the models' load on body i (world/models.c) at velocity vm, spin wm. */
+static inline double model_power(const pl_world *w, int i, pl_vec2 vm, double wm) {
+    return w->ext_force[i].x * vm.x + w->ext_force[i].y * vm.y + w->ext_moment[i] * wm;
+}
+
 /* Raised-cosine ramp of a sinusoid at time t: envelope e and its first two time derivatives
    (e = 1, 0, 0 without a ramp or between the ramps). */
 static void ramp_envelope(const pl_motion *m, double t, double *e, double *de, double *dde) {
@@ -112,7 +117,7 @@ void pl__integrate(pl_world *w, double dt) {
     const double C = w->def.global_c, Cr = w->def.global_c_rot, alpha = w->def.rayleigh_alpha;
     const double lam = w->def.local_damping;
     const int plain = C == 0 && Cr == 0 && alpha == 0 && lam == 0;
-    double damped = 0, external = 0, work_shear = 0;
+    double damped = 0, external = 0, work_shear = 0, ext_half = 0;
     int bad = -1;
     /* the neighbour list is rebuilt when some body has moved (or turned) by half the skin */
     const double lim = 0.5 * w->skin, lim2 = lim * lim;
@@ -120,6 +125,8 @@ void pl__integrate(pl_world *w, double dt) {
     pl_vec2 *restrict pos = w->pos, *restrict vel = w->vel;
     pl_tally *restrict tl = w->tally;
     const int track = w->def.track_energy;
+    /* the models' external-force column of this step (world/models.c) */
+    const int models = w->model_n > 0 && w->ext_force && w->ext_cap >= w->n;
     for (int i = 0; i < w->n; i++) {
         const int motion = w->motion[i];
         if (motion == PL_MOTION_FIXED) {
@@ -135,6 +142,8 @@ void pl__integrate(pl_world *w, double dt) {
             /* the force on a kinematic body is the reaction of what it pushes: its work on
                the system is minus its power */
             external -= (w->force[i].x * vm.x + w->force[i].y * vm.y + w->torque[i] * wm) * dt;
+            if (models && motion == PL_MOTION_DYNAMIC && w->wants_load[i]) /* a massless body: in and out */
+                external += model_power(w, i, vm, wm) * dt;
             pos[i].x += vm.x * dt;
             pos[i].y += vm.y * dt;
             w->angle[i] += wm * dt;
@@ -182,7 +191,21 @@ void pl__integrate(pl_world *w, double dt) {
                 damped += (c * (vm.x * vm.x + vm.y * vm.y) - (Fl.x * vm.x + Fl.y * vm.y)) * dt;
                 if (I > 0) damped += ((Cr + alpha * I) * wm * wm - Tl * wm) * dt;
             }
-            if (w->any_load) external += (w->load[i].x * vm.x + w->load[i].y * vm.y + w->load_moment[i] * wm) * dt;
+            /* work of the point loads and of the models' loads (world/models.c) with the mid-step
+               velocity: m (v1 - v0) = F dt dotted with (v0 + v1) / 2 gives
+               m (v1^2 - v0^2) / 2 = F . vm dt exactly, so a load's work equals the change of the
+               kinetic energy at the staggered half steps (and, with springs, of kinetic + elastic
+               energy to O(dt^2), bounded); the start-of-step velocity v0 would miss
+               m |v1 - v0|^2 / 2 per step. Summed, this is the trapezoidal work up to t_n plus
+               F_n . v1 dt / 2 (kept in e_ext_half, which the report at t_n takes off) */
+            if (w->any_load) {
+                external += (w->load[i].x * vm.x + w->load[i].y * vm.y + w->load_moment[i] * wm) * dt;
+                ext_half += (w->load[i].x * v1.x + w->load[i].y * v1.y + w->load_moment[i] * w1) * 0.5 * dt;
+            }
+            if (models && w->wants_load[i]) {
+                external += model_power(w, i, vm, wm) * dt;
+                ext_half += model_power(w, i, v1, w1) * 0.5 * dt;
+            }
             vel[i] = v1;
             w->omega[i] = w1;
             pos[i].x += v1.x * dt;
@@ -212,6 +235,7 @@ void pl__integrate(pl_world *w, double dt) {
     w->e_damped += damped;
     if (track) w->e_friction += -work_shear - (w->e_shear - w->e_shear_prev);
     w->e_external += external;
+    w->e_ext_half = ext_half;
     if (bad >= 0 && w->nonfinite_body < 0) w->nonfinite_body = bad;
     if (moved) w->need_rebuild = 1;
 }

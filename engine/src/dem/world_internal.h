@@ -160,6 +160,9 @@ struct pl_world {
 
     /* energy tallies (J) */
     double e_damped, e_friction, e_external, e_initial;
+    double e_ext_half;            /* the last step's load work over its second half step,
+                                     F_n . v_{n+1/2} dt / 2: e_external runs half a step past the
+                                     reported time t_n (dem/integrate.c, dem/diagnostics.c) */
     double e_models;              /* energy the attached models hold (world/models.c), for the surge guard */
     int energy_initialised;
     double ke_prev;
@@ -253,6 +256,8 @@ pl_status pl__check_guards(pl_world *w);
 /* Energy */
 double pl__kinetic_energy(const pl_world *w);
 double pl__elastic_energy(const pl_world *w);
+/* Work done on the system up to the reported time t_n (e_external less the last half step). */
+double pl__external_work(const pl_world *w);
 double pl__gravitational_energy(const pl_world *w);
 
 

@@ -143,18 +143,14 @@ pl_status pl__models_step(pl_world *w, double dt) {
         st = m->cls->loads(m->self, w, &g, dt, w->ext_force, w->ext_moment);
         if (st != PL_OK) return st;
     }
-    /* the loads act on the dynamic bodies (servo walls read theirs in their motion law) */
-    double work = 0;
+    /* the loads act on the dynamic bodies (servo walls read theirs in their motion law); their
+       work is tallied by the integrator with the mid-step velocity (dem/integrate.c) */
     for (int i = 0; i < w->n; i++) {
         if (w->motion[i] != PL_MOTION_DYNAMIC || !w->wants_load[i]) continue;
-        const pl_vec2 F = w->ext_force[i];
-        const double M = w->ext_moment[i];
-        w->force[i].x += F.x;
-        w->force[i].y += F.y;
-        w->torque[i] += M;
-        work += (F.x * w->vel[i].x + F.y * w->vel[i].y + M * w->omega[i]) * dt;
+        w->force[i].x += w->ext_force[i].x;
+        w->force[i].y += w->ext_force[i].y;
+        w->torque[i] += w->ext_moment[i];
     }
-    w->e_external += work;
     w->e_models = 0;
     for (int k = 0; k < w->model_n; k++)
         if (w->models[k].cls->stored_energy) w->e_models += w->models[k].cls->stored_energy(w->models[k].self);

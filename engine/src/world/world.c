@@ -112,7 +112,7 @@ static void init_energy_reference(pl_world *w) {
     w->e_supply0 = pl__kinetic_energy(w) + pl__elastic_energy(w);
     w->pe0 = pl__gravitational_energy(w);
     w->ext0 = w->e_external;
-    w->e_initial = w->e_supply0 + w->pe0 + w->e_damped + w->e_friction + w->e_fracture - w->e_external;
+    w->e_initial = w->e_supply0 + w->pe0 + w->e_damped + w->e_friction + w->e_fracture - pl__external_work(w);
     w->energy_initialised = 1;
 }
 
