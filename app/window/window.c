@@ -404,6 +404,10 @@ static void build_hud(win *g)
     panel_button(&c, c.x0, bw, "restart", HIT_RESTART, 0);
     panel_button(&c, c.x0 + bw + 6.0, bw, "rewind", HIT_REWIND, 0);
     c.y += 1.7 * fs + 5.0;
+    /* longer jumps back, so that a replay of an event seconds ago needs no keyboard */
+    panel_button_i(&c, c.x0, bw, "back 1 s", HIT_REWIND, 1, 0);
+    panel_button_i(&c, c.x0 + bw + 6.0, bw, "back to start", HIT_REWIND, 2, 0);
+    c.y += 1.7 * fs + 5.0;
     panel_button(&c, c.x0, bw, "scenes", HIT_SCENES, g->picking);
     panel_button(&c, c.x0 + bw + 6.0, bw, "charts", HIT_CHARTS, g->show_charts && g->sim.live.ncharts > 0);
     c.y += 1.7 * fs + 6.0;
@@ -804,7 +808,7 @@ static int panel_click(win *g, int x, int y, int drag)
         case HIT_PLAY: key(g, SDLK_SPACE, 0); break;
         case HIT_STEP: key(g, SDLK_s, 0); break;
         case HIT_RESTART: key(g, SDLK_r, 0); break;
-        case HIT_REWIND: key(g, SDLK_LEFT, 0); break;
+        case HIT_REWIND: key(g, g->hit[i].index == 1 ? SDLK_PAGEDOWN : g->hit[i].index == 2 ? SDLK_HOME : SDLK_LEFT, 0); break;
         case HIT_SCENES:
             g->picking = !g->picking;
             if (g->picking) pl_picker_scan(&g->picker, g->sim.path);

@@ -34,7 +34,7 @@ end
 w:water { x_min = 0, x_max = W, bottom = 0, level = H, density = 1000, moving_level = true }
 
 local function density_param(name, i, rho)
-  return { name = name, unit = "kg/m3", value = rho, min = 100, max = 3000, step = 100,
+  return { name = name, unit = "kg/m³", value = rho, min = 100, max = 3000, step = 100,
            set = function(world, v) blocks[i]:set_density(v) end }
 end
 
@@ -43,7 +43,7 @@ local params = {
   density_param("wood block", 1, 600),
   density_param("ice block", 2, 920),
   density_param("brick block", 3, 1900),
-  { name = "water density", unit = "kg/m3", value = 1000, min = 500, max = 2000, step = 100,
+  { name = "water density", unit = "kg/m³", value = 1000, min = 500, max = 2000, step = 100,
     set = function(world, v) world:water_set { density = v } end },
 }
 

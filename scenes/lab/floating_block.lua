@@ -23,9 +23,9 @@ local block = w:rectangle { center = { W / 2, 0.22 }, width = L, height = B, mat
 
 local rho_b, rho_f = 600, 1000
 local params = {
-  { name = "block density", unit = "kg/m3", value = rho_b, min = 100, max = 3000, step = 100,
+  { name = "block density", unit = "kg/m³", value = rho_b, min = 100, max = 3000, step = 100,
     set = function(world, v) rho_b = v; block:set_density(v) end },
-  { name = "water density", unit = "kg/m3", value = rho_f, min = 500, max = 2000, step = 100,
+  { name = "water density", unit = "kg/m³", value = rho_f, min = 500, max = 2000, step = 100,
     set = function(world, v) rho_f = v; world:water_set { density = v } end },
 }
 

@@ -78,5 +78,5 @@ set("EXODUSFLAG", 0)
 set("EXODUSOUTPUTSTEP", 10)
 apply_mimes_params()
 
-return M.scene { render = { title = string.format("Buoyancy of a particle, density ratio ρp/ρf = %g (Klosek 1997, §4.2)", ratio),
+return M.scene { render = { title = string.format("Particle in water, ρp/ρf = %g (Klosek 1997 §4.2)", ratio),
                             layers = "bodies,mesh,pressure,colorbar,title,time" } }

@@ -63,7 +63,7 @@ static int sweep(void) {
             {"computed limit (Gershgorin bound)", lx, ly, 2, PL_SERIES_DASHED, {0, 0, 0, 1}, 1.5},
             {fname, fx, ly, 2, PL_SERIES_LINE, {0.84, 0.15, 0.16, 1}, 2}};
         pl_chart_def d = pl_default_chart_def();
-        d.title = "Explicit Darcy update (seed 000 eq. 3.18), 40-cell rod";
+        d.title = "Explicit Darcy update (Klosek 1997 eq. 3.18), 40-cell rod";
         d.xlabel = "sub-step / computed limit (1)";
         d.ylabel = "largest |head| up to t = 0.05 s (m)";
         d.series = s;

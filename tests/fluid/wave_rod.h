@@ -1,6 +1,6 @@
 /* The pressure-wave problem of seed 000 §4.3 (Figs. 4-10 to 4-12), shared by its test
  * (tests/fluid/test_fluid_wave.c), the charts of docs/fluid.md (tests/bench/fluid_charts.c)
- * and the seed figures (tests/render/seed_wave_figures.c): a 1 x 0.1 rod of n cells, no
+ * and the Klosek 1997 figures (tests/render/wave_figures.c): a 1 x 0.1 rod of n cells, no
  * gravity, head 1 at x = 0 and 0 at x = 1 from t = 0, D = 1, storage 1, so that the head is
  * erfc(x / 2 sqrt(t)) while the wave has not reached the far end.
  * method: FLUID_METHOD (0 backward Euler, 1 Crank-Nicolson, 2 explicit);

@@ -245,11 +245,17 @@ key p; wait_shots 24
 if q3=$("$PSNR" "$OUT/v/screenshot_023.png" "$OUT/v/screenshot_022.png" 60); then
   fail "the bodies toggle changed nothing ($q3 dB)"; fi
 ctl layer 0; sleep 0.2
+# the "back 1 s" button rewinds one second (to t = 0 if the run is younger): the window's log
+# reports the rewind and its time, below the time before
+ctl rewind 1; sleep 0.5
+t_r=$(grep '^rewind: ' "$OUT/view.log" | tail -1 | sed 's/.*(t = \([^ ]*\) s).*/\1/')
+awk -v a="$t_c" -v b="$t_r" 'BEGIN { exit !(b != "" && b < a && b >= a - 1.0 - 1e-6) }' ||
+  fail "the back 1 s button did not rewind one second ($t_c -> $t_r s)"
 # the restart button: back to t = 0
 ctl restart; sleep 0.3
 key p; wait_shots 25
 [ "$(shot_time 25)" = 0 ] || fail "the restart button did not restart ($(shot_time 25) s)"
-echo "panel: no HUD pixel in the scene's area ($q dB), panel drawn; step ($t_a -> $t_b s), play ($t_b -> $t_c s), layer toggle, restart work by mouse"
+echo "panel: no HUD pixel in the scene's area ($q dB), panel drawn; step ($t_a -> $t_b s), play ($t_b -> $t_c s), layer toggle, back 1 s ($t_c -> $t_r s), restart work by mouse"
 
 # 9. the live chart (the scene's render.live: the blocks' heights): the charts button shows it
 #    in the panel; while the scene plays the chart changes; no HUD pixel in the scene's area

@@ -121,7 +121,7 @@ static int test_plates(void) {
     printf("cylinder in Poiseuille flow k=0.125: lambda = F/(mu U0) = %.4f (line integral %.4f); Richou 10.65\n",
            r.lam_react, r.lam_line);
     pl_validation("fluid.ns_richou", "Navier-Stokes, Stokes limit: wall correction lambda = F/(mu U0), k=0.125",
-                  "Richou et al. 2004 (seed 004 Table 2): 10.65", "2 %", "circle (128-gon): %.3f (%.2f %%)",
+                  "Richou et al. 2004 (Mueller et al. 2020 Table 2): 10.65", "2 %", "circle (128-gon): %.3f (%.2f %%)",
                   r.lam_react, 100 * (r.lam_react / 10.65 - 1));
     ENSURE_REL(r.lam_react, 10.65, 0.02);
     /* the seed's dodecagon (r_max = 15 mm scaled to 1): b = r_ref / k for r_max, r_min, r_equi */
@@ -138,7 +138,7 @@ static int test_plates(void) {
                    rname[k], r.lam_react, 100 * (r.lam_react / 10.65 - 1));
             if (k == 2)
                 pl_validation("fluid.ns_dodecagon", "Navier-Stokes: dodecagon between plates, k = r_equi/b = 0.125",
-                              "Richou et al. 2004 circle 10.65; seed 004 Table 2", "4 %", "%s %.3f (%+.1f %%)",
+                              "Richou et al. 2004 circle 10.65; Mueller et al. 2020 Table 2", "4 %", "%s %.3f (%+.1f %%)",
                               o ? "side-on" : "corner-on", r.lam_react, 100 * (r.lam_react / 10.65 - 1));
             if (k == 2) ENSURE_REL(r.lam_react, 10.65, 0.04);
         }

@@ -93,7 +93,7 @@ static int servo_holds_force(void) {
         fmin = fmin > f ? f : fmin;
     }
     fprintf(stderr, "  servo: piston force %.2f .. %.2f N (target %.0f)\n", fmin, fmax, target);
-    pl_validation("grains.servo", "servo wall (seed 003 eqs. 5.11–5.12)", "holds target force", "1 %",
+    pl_validation("grains.servo", "servo wall (Tan 1990 eqs. 5.11–5.12)", "holds target force", "1 %",
                   "%.2f–%.2f N for %.0f N", fmin, fmax, target);
     ENSURE_NEAR(fmin, target, 0.01 * target);
     ENSURE_NEAR(fmax, target, 0.01 * target);

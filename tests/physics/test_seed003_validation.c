@@ -60,7 +60,7 @@ static int table_2_1_case1_oscillates(void) {
     double lo, hi;
     plate_force(0, 0, 5000, &lo, &hi);
     fprintf(stderr, "  case 1: plate force range %.1f .. %.1f N (W = %.1f)\n", lo, hi, W);
-    pl_validation("grains.plate_undamped", "disc on plate, no damping (seed 003 Table 2.1 case 1)",
+    pl_validation("grains.plate_undamped", "disc on plate, no damping (Tan 1990 Table 2.1 case 1)",
                   "force oscillates 0 … 2W", "1 % of W", "%.1f … %.1f N (2W = %.1f)", lo, hi, 2 * W);
     ENSURE_NEAR(lo, 0, 0.01 * W);
     ENSURE_NEAR(hi, 2 * W, 0.01 * W);
@@ -74,7 +74,7 @@ static int table_2_1_case2_global(void) {
     fprintf(stderr, "  case 2: F(5 s) = %.2f N, analytic %.2f N, seed 72703.36 N; error vs W %.4f %% (seed 3.5742 %%)\n",
             f, fa, 100 * fabs(f - W) / W);
     pl_validation("grains.plate_global_c", "disc on plate, global C = 1e4 (case 2)",
-                  "analytic damped oscillator at t = 5 s; seed 72 703.36 N (3.574 %)",
+                  "analytic damped oscillator at t = 5 s; Tan 1990: 72 703.36 N (3.574 %)",
                   "0.2 % of W vs analytic; ≤ 3.6 % vs W", "%.2f N (%.3f %%), analytic %.2f N", f,
                   100 * fabs(f - W) / W, fa);
     ENSURE_NEAR(f, fa, 0.002 * W);
@@ -87,7 +87,7 @@ static int table_2_1_case3_contact(void) {
     const double f = plate_force(1e5, 0, 5000, &lo, &hi);
     fprintf(stderr, "  case 3: F(5 s) = %.3f N, error %.5f %% (seed 0.0006 %%)\n", f, 100 * fabs(f - W) / W);
     pl_validation("grains.plate_contact_cn", "disc on plate, contact c_N = 1e5 (case 3)",
-                  "W = 75 398.2 N; seed error 0.0006 %", "0.01 %", "%.4f %%", 100 * fabs(f - W) / W);
+                  "W = 75 398.2 N; Tan 1990 error 0.0006 %", "0.01 %", "%.4f %%", 100 * fabs(f - W) / W);
     ENSURE_NEAR(f, W, 1e-4 * W);
     return 0;
 }
@@ -96,7 +96,7 @@ static int table_2_1_case4_both(void) {
     double lo, hi;
     const double f = plate_force(1e5, 4.5e5, 5000, &lo, &hi);
     fprintf(stderr, "  case 4: F(5 s) = %.3f N, error %.5f %% (seed 0.0010 %%)\n", f, 100 * fabs(f - W) / W);
-    pl_validation("grains.plate_critical", "disc on plate, c_N and C (case 4, critical)", "W; seed 0.0010 %",
+    pl_validation("grains.plate_critical", "disc on plate, c_N and C (case 4, critical)", "W; Tan 1990: 0.0010 %",
                   "0.01 %, no overshoot > 0.5 %", "%.4f %%, peak %.4f W", 100 * fabs(f - W) / W, hi / W);
     ENSURE_NEAR(f, W, 1e-4 * W);
     /* critically damped: no overshoot beyond the weight by more than 0.5 % */
@@ -170,8 +170,8 @@ static int table_2_2_five_discs(void) {
         worst_seed = fmax(worst_seed, dseed);
     }
     pl_validation("grains.five_discs", "five-disc stack, frictionless (Table 2.2)",
-                  "seed's predicted forces, and rigid-disc theory within the seed's own errors", "0.01 % vs seed",
-                  "≤ %.4f %% vs seed on all 10 contacts", worst_seed);
+                  "Tan 1990's predicted forces, and rigid-disc theory within its own errors", "0.01 % vs Tan 1990",
+                  "≤ %.4f %% vs Tan 1990 on all 10 contacts", worst_seed);
     pl_world_destroy(&f.w);
     ENSURE(!fail);
     return 0;
@@ -210,7 +210,7 @@ static int table_2_3_five_discs_friction(void) {
         worst_f = fmax(worst_f, 100 * fabs(F - S) / S);
     }
     pl_validation("grains.five_discs_friction", "five-disc stack, friction 15° (Table 2.3)",
-                  "wall reactions = total weight 376 991.1 N, ΣF_x = 0; seed's |F| per contact", "1e-3 of the weight; 1 %",
+                  "wall reactions = total weight 376 991.1 N, ΣF_x = 0; Tan 1990's |F| per contact", "1e-3 of the weight; 1 %",
                   "ΣF_y = %.3f N, ΣF_x = %.3f N; |F| within %.2f %%", -sum.y, -sum.x, worst_f);
     ENSURE(!fail);
     ENSURE_NEAR(-sum.y, weight, 1e-3 * weight);

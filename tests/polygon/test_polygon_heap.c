@@ -146,7 +146,7 @@ static int polygons_heap_steeper_than_discs(void) {
     const double ap = 0.5 * (p[0].angle + p[1].angle), ac = 0.5 * (c[0].angle + c[1].angle);
     fprintf(stderr, "  mean angle of repose: polygons %.1f deg, discs %.1f deg\n", ap, ac);
     pl_validation("polygon.heap", "heap of polygons vs discs, same friction (150 grains, plain floor)",
-                  "polygons clearly steeper (seed 004 Fig. 1)", "> discs + 8°; polygons 15–40°",
+                  "polygons clearly steeper (Mueller et al. 2020 Fig. 1)", "> discs + 8°; polygons 15–40°",
                   "%.1f° vs %.1f° (mean of two pours: %.1f° and %.1f° vs %.1f° and %.1f°)", ap, ac, p[0].angle,
                   p[1].angle, c[0].angle, c[1].angle);
     ENSURE(ap > ac + 8);

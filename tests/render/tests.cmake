@@ -29,6 +29,6 @@ target_compile_definitions(bench_render PRIVATE ${_pl_render_defs})
 
 # Seed 000 Figs. 4-10 to 4-12 (pressure wave, FE against erfc) as charts; run by
 # tools/figures.sh (not a test).
-add_executable(seed_wave_figures render/seed_wave_figures.c)
-target_link_libraries(seed_wave_figures PRIVATE porelab_render)
-target_include_directories(seed_wave_figures PRIVATE ${PL_TEST_DIR})
+add_executable(wave_figures render/wave_figures.c)
+target_link_libraries(wave_figures PRIVATE porelab_render)
+target_include_directories(wave_figures PRIVATE ${PL_TEST_DIR})

@@ -26,7 +26,7 @@ scene.on_finish = function(w)
     print(string.format("check %s: worst |du - drop| = %.3f sigma'_v0 (tolerance %.2f), rms %.3f (tolerance %.2f), largest drop %.3f sigma'_v0",
       row.kind, worst, TOL, row.rms / row.sv0, TOL_RMS, seen))
     -- a part of a row of docs/validation.md (tests/harness.h: pl_validation; ctest label validation-doc)
-    print(string.format("VALIDATION|%s|undrained constant-volume simple shear (seed 003 §5.4–5.6, "
+    print(string.format("VALIDATION|%s|undrained constant-volume simple shear (Tan 1990 §5.4–5.6, "
       .. "20 discs%s)|Δu = drop of σ'_v in the dry constant-volume run|worst %.2f σ'_v0, rms %.2f|%s: worst %.3f, "
       .. "rms %.3f σ'_v0", SIMPLE_SHEAR.cycles and "soil.simple_shear_short" or "soil.simple_shear", SIMPLE_SHEAR.cycles and (", " .. SIMPLE_SHEAR.cycles
       .. " cycles") or "", TOL, TOL_RMS, row.kind, worst, row.rms / row.sv0))

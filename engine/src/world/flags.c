@@ -34,10 +34,10 @@ static const flag_row BASE[] = {
     /* body forces and damping */
     {{"GRAVITY_X", "m/s^2", "gravity, x component", -1e6, 1e6, 1}, 0, 0},
     {{"GRAVITY_Y", "m/s^2", "gravity, y component", -1e6, 1e6, 1}, -9.81, 0},
-    {{"RAYLEIGH_FACTOR", "1/s", "mass-proportional damping alpha of the Rege scheme (seed 000 eq. 2.5)", 0, 1e9, 1}, 0, 0},
-    {{"GLOBAL_DAMPING", "N s/m", "translational global damping C (seed 003 eq. 2.21)", 0, 1e30, 1}, 0, 0},
-    {{"GLOBAL_DAMPING_ROT", "N m s", "rotational global damping C* (seed 003 eq. 2.22)", 0, 1e30, 1}, 0, 0},
-    {{"LOCAL_DAMPING", "1", "non-viscous damping ratio proportional to the resultant force (seed 002 eqs. 24-29)", 0, 1, 1}, 0, 0},
+    {{"RAYLEIGH_FACTOR", "1/s", "mass-proportional damping alpha of the Rege scheme (Klosek 1997 eq. 2.5)", 0, 1e9, 1}, 0, 0},
+    {{"GLOBAL_DAMPING", "N s/m", "translational global damping C (Tan 1990 eq. 2.21)", 0, 1e30, 1}, 0, 0},
+    {{"GLOBAL_DAMPING_ROT", "N m s", "rotational global damping C* (Tan 1990 eq. 2.22)", 0, 1e30, 1}, 0, 0},
+    {{"LOCAL_DAMPING", "1", "non-viscous damping ratio proportional to the resultant force (Oñate & Rojek 2004 eqs. 24-29)", 0, 1, 1}, 0, 0},
     {{"ENERGY_TRACKING", "0/1", "1: exact tallies of the energy dissipated by dashpots and friction; 0: off, for speed", 0, 1, 1}, 1, 1},
     /* MIMES output flags that porelab replaces with VTK/PNG output */
     {{"EXODUSFLAG", "0/1", "EXODUS output of MIMES: not built (porelab writes VTK .vtu/.pvd and PNG instead)", 0, 1, 0}, 0, 1},

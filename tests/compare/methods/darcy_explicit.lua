@@ -12,7 +12,7 @@ end
 
 return {
   name = "darcy_explicit",
-  label = "Darcy, explicit (seed 000 eq. 3.18)",
+  label = "Darcy, explicit (Klosek 1997 eq. 3.18)",
   model = "darcy",
   problems = {
     wave = { knob = "cells along the rod", unit = "1", values = { 10, 20, 40, 80, 160 },

@@ -21,7 +21,7 @@ end
 
 return {
   name = "wave",
-  title = "Pressure wave in a rod (seed 000 4.3)",
+  title = "Pressure wave in a rod (Klosek 1997 §4.3)",
   quantity = "head at x = 0.2 m, t = 0.01 s",
   unit = "m",
   reference = { value = 0.157299207050285, source = "erfc(x / 2 sqrt(D t / S)), Carslaw & Jaeger 1959 2.4" },

@@ -1036,7 +1036,7 @@ static void ns_destroy(void *self) {
 
 const pl_model_class pl_navier_stokes_class = {
     .name = "navier_stokes",
-    .label = "resolved Navier-Stokes (P2+bubble/P1 on a gmsh mesh of the pore space, seed 004)",
+    .label = "resolved Navier-Stokes (P2+bubble/P1 on a gmsh mesh of the pore space, Mueller et al. 2020)",
     .def_size = sizeof(pl_navier_stokes_def),
     .params = pl_navier_stokes_params,
     .nparams = PL_NAVIER_STOKES_PARAM_COUNT,

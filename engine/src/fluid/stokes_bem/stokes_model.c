@@ -406,7 +406,7 @@ static pl_status build(pl_stokes *m, pl_world *w, const pl_grain_view *g) {
             if (g->shape[i] == PL_SHAPE_DISC && g->shape[j] == PL_SHAPE_DISC && dd <= rr - 2 * sh)
                 st = pl__world_error(w, PL_ERR_STATE,
                                      "stokes: discs %d and %d overlap by %g m at t = %g s; the fluid needs a connected "
-                                     "domain between them: set gap > %g m (seed 003 section 3.4)",
+                                     "domain between them: set gap > %g m (Tan 1990 section 3.4)",
                                      i, j, rr - dd, g->time, rr - dd);
         }
     pl_free(corner);
@@ -1015,7 +1015,7 @@ static void sb_destroy(void *self) {
 
 const pl_model_class pl_stokes_class = {
     .name = "stokes",
-    .label = "resolved Stokes flow by boundary elements (seed 003)",
+    .label = "resolved Stokes flow by boundary elements (Tan 1990)",
     .def_size = sizeof(pl_stokes_def),
     .params = pl_stokes_params,
     .nparams = PL_STOKES_PARAM_COUNT,

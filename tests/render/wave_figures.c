@@ -5,7 +5,7 @@
  * at x = 1, permeability and storage 1, no gravity: eq. 4.1 with all constants 1), stepped
  * with the implicit (backward Euler) method at dt = 1e-6 s. One chart per time, drawn with
  * porelab's charts (PLplot), like the thesis's three figures.
- *   seed_wave_figures OUTDIR     writes OUTDIR/seed000-fig4-{10,11,12}-wave.png
+ *   wave_figures OUTDIR     writes OUTDIR/klosek1997-fig4-{10,11,12}-wave.png
  * Run by tools/figures.sh. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -106,9 +106,9 @@ int main(int argc, char **argv) {
         def.ymin = 0.0;
         def.ymax = 1.02;
         def.legend = 1;
-        snprintf(path, sizeof path, "%s/seed000-fig%s-wave.png", dir, fig[ti]);
+        snprintf(path, sizeof path, "%s/klosek1997-fig%s-wave.png", dir, fig[ti]);
         if (pl_chart_write(path, &def, err, sizeof err)) {
-            fprintf(stderr, "seed_wave_figures: %s\n", err);
+            fprintf(stderr, "wave_figures: %s\n", err);
             return 1;
         }
         printf("wrote %s  (t = %.3f s, 64 elements: largest nodal error %.4f)\n", path, t, emax);
