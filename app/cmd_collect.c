@@ -403,7 +403,7 @@ static int write_chart(const table *t, const char *spec, const char *path, const
         mm[g] = calloc((size_t)(nu + 1), sizeof(double));
         lo[g] = calloc((size_t)(nu + 1), sizeof(double));
         hi[g] = calloc((size_t)(nu + 1), sizeof(double));
-        int min_count = n;
+        int min_count = n, max_count = 0;
         for (int u = 0; u < nu; u++) {
             double s = 0, s2 = 0;
             int k = 0;
@@ -417,12 +417,18 @@ static int write_chart(const table *t, const char *spec, const char *path, const
             lo[g][u] = mean - sd;
             hi[g][u] = mean + sd;
             if (k < min_count) min_count = k;
+            if (k > max_count) max_count = k;
         }
         const char *gk = key[g][0] ? key[g] : "";
         snprintf(names[g][0], sizeof names[g][0], "%.255s%smean of %d run%s per value", gk, gk[0] ? ": " : "", min_count,
                  min_count == 1 ? "" : "s");
         snprintf(names[g][1], sizeof names[g][1], "mean \u00b1 1 s.d.");
         snprintf(names[g][2], sizeof names[g][2], "each run");
+        if (max_count <= 1) { /* one run per value: no mean, no spread to draw */
+            snprintf(names[g][0], sizeof names[g][0], "%.255s%sone run per value", gk, gk[0] ? ": " : "");
+            ser[ns++] = (pl_chart_series){names[g][0], mx[g], mm[g], nu, PL_SERIES_LINE_POINTS, pal[g], 2};
+            continue;
+        }
         ser[ns++] = (pl_chart_series){names[g][0], mx[g], mm[g], nu, PL_SERIES_LINE_POINTS, pal[g], 2};
         if (with_sd) {
             ser[ns++] = (pl_chart_series){g == 0 ? names[g][1] : NULL, mx[g], lo[g], nu, PL_SERIES_DASHED, pal[g], 1};

@@ -17,13 +17,16 @@ $P collect "$OUT/brazilian" > /dev/null
 $P sweep scenes/rock/ucs.lua --grid rn=1.25e4,2.5e4,5e4 --grid width=60 --run --out "$OUT/ucs_rn" > /dev/null
 $P sweep scenes/rock/ucs.lua --grid kn=1e10,2e10,4e10 --grid width=60 --run --out "$OUT/ucs_kn" > /dev/null
 $P collect "$OUT/ucs_rn" --chart ucs_MPa:rn --chart-out "$OUT/rock_ucs_vs_rn.png" \
-  --title "UCS against the bond tensile strength R_n" > /dev/null
+  --title "UCS against the bond tensile strength R#dn#u" --xlabel "bond tensile strength R#dn#u (N/m)" \
+  --ylabel "unconfined compressive strength (MPa)" > /dev/null
 $P collect "$OUT/ucs_kn" --chart E_GPa:kn --chart-out "$OUT/rock_E_vs_kn.png" \
-  --title "Young's modulus against the bond stiffness k_n" > /dev/null
+  --title "Young's modulus against the bond stiffness k#dn#u" --xlabel "bond stiffness k#dn#u (N/m)" \
+  --ylabel "Young's modulus E (GPa)" > /dev/null
 # sigma_t at k_t/k_n = 0.5 (jobs 4-6 of the grid: rt_ratio 1, 2, 4)
 $P collect "$OUT/brazilian/job_0004" "$OUT/brazilian/job_0005" "$OUT/brazilian/job_0006" -o "$OUT/bz_kt05.csv" \
   --chart sigma_t_MPa:rt_ratio --chart-out "$OUT/rock_sigma_t_vs_strength_ratio.png" \
-  --title "Brazilian strength against the bond strength ratio (k_t/k_n = 0.5)" > /dev/null
+  --title "Brazilian strength against the bond strength ratio (k#dt#u/k#dn#u = 0.5)" \
+  --xlabel "bond strength ratio R#dt#u/R#dn#u" --ylabel "tensile strength #gs#dt#u (MPa)" > /dev/null
 # rows (by column name, the CSV header after the '#' lines): kt_ratio, rt_ratio, E, nu, UCS | sigma_t
 col() { grep -v '^#' "$1" | head -1 | tr ',' '\n' | grep -n -x "$2" | head -1 | cut -d: -f1; }
 U="$OUT/ucs/results.csv"; B="$OUT/brazilian/results.csv"
