@@ -418,7 +418,7 @@ double pl_draw_fluid(pl_draw_list *dl, const pl_render_scene *s, const pl_render
                 n++;
             }
             /* automatic scale: the fastest cell arrow spans 0.9 cells */
-            if (vcell > 0.0 && !(opt->velocity_scale > 0.0)) dl->auto_vscale = 0.9 * cell / dl->camera.scale / vcell;
+            if (vcell > 0.0) dl->auto_vscale = 0.9 * cell / dl->camera.scale / vcell;
             if (!(opt->velocity_scale > 0.0) && vcell > 0.0) vscale = dl->auto_vscale;
             pl_draw_arrows(dl, at, vv, n, vscale, pl_rgb(0.05, 0.12, 0.30), 1.2f, 2.5);
             free(acc);

@@ -209,9 +209,7 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     pl_render_scene_denoise_fluid(s);
     quantity q;
     body_quantity(s, opt, &q);
-    /* the automatic ranges are recorded only where the scene fixed none (a fixed range is drawn
-       as given, and must not be reported as having grown) */
-    if (q.active && q.auto_hi > q.auto_lo && !(opt->color_max > opt->color_min)) {
+    if (q.active && q.auto_hi > q.auto_lo) {
         dl->auto_color_set = 1;
         dl->auto_color_lo = q.auto_lo;
         dl->auto_color_hi = q.auto_hi;
@@ -219,11 +217,10 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     /* the colour bar shows the fluid field when it is drawn, else the body quantity */
     quantity fq;
     memset(&fq, 0, sizeof fq);
-    const int field = (L & (PL_LAYER_PRESSURE | PL_LAYER_ISOLINES)) &&
-                      pl_fluid_field_range(s, opt, &fq.vmin, &fq.vmax, &fq.map, fq.label, sizeof fq.label,
-                                           &fq.unit_factor);
-    if (field) fq.active = (L & PL_LAYER_PRESSURE) != 0;
-    if (field && !(opt->fluid_max > opt->fluid_min)) {
+    if ((L & (PL_LAYER_PRESSURE | PL_LAYER_ISOLINES)) &&
+        pl_fluid_field_range(s, opt, &fq.vmin, &fq.vmax, &fq.map, fq.label, sizeof fq.label,
+                             &fq.unit_factor)) {
+        fq.active = (L & PL_LAYER_PRESSURE) != 0;
         pl_render_options auto_opt = *opt;
         auto_opt.fluid_min = auto_opt.fluid_max = 0.0;
         double alo, ahi, uf;
@@ -418,10 +415,15 @@ int pl_render_to_rgba(const pl_world *w, const pl_render_options *opt, unsigned 
 
 /* ------------------------------------------------------ fixed ranges across a run */
 
-void pl_render_ranges_apply(const pl_render_ranges *r, const pl_render_options *opt,
+void pl_render_ranges_apply(pl_render_ranges *r, const pl_render_options *opt,
                             pl_render_options *out) {
     *out = *opt;
     if (!r) return;
+    /* what the scene fixed itself is drawn as given; its automatic range is still tracked (it
+       is not used) but never reported as having grown */
+    r->field_fixed = opt->fluid_max > opt->fluid_min;
+    r->color_fixed = opt->color_max > opt->color_min;
+    r->vscale_fixed = opt->velocity_scale > 0.0;
     if (r->field_set && !(opt->fluid_max > opt->fluid_min)) {
         out->fluid_min = r->field_lo;
         out->fluid_max = r->field_hi;
@@ -470,15 +472,15 @@ void pl_render_ranges_update(pl_render_ranges *r, const pl_draw_list *dl) {
 
 void pl_render_ranges_note(const pl_render_ranges *r, FILE *out) {
     if (!r || !out) return;
-    if (r->field_changed)
+    if (r->field_changed && !r->field_fixed)
         fprintf(out, "porelab: note: the fluid colour range grew during the run (it is never "
                      "re-fitted per frame, only widened); for one range from the first frame set "
                      "render.fluid_range = { %.4g, %.4g }\n", r->field_lo, r->field_hi);
-    if (r->color_changed)
+    if (r->color_changed && !r->color_fixed)
         fprintf(out, "porelab: note: the body colour range grew during the run; for one range "
                      "from the first frame set render.color_range = { %.4g, %.4g }\n",
                 r->color_lo, r->color_hi);
-    if (r->vscale_changed)
+    if (r->vscale_changed && !r->vscale_fixed)
         fprintf(out, "porelab: note: the velocity arrows were shortened during the run to fit "
                      "faster flow; for one scale from the first frame set "
                      "render.velocity_scale = %.4g (m per m/s)\n", r->vscale);

@@ -99,11 +99,13 @@ typedef struct pl_render_ranges {
     double color_lo, color_hi;   ///< body colouring quantity, SI units
     double vscale;               ///< m per (m/s)
     int field_changed, color_changed, vscale_changed;
+    int field_fixed, color_fixed, vscale_fixed; ///< the scene's own options fix them (no note)
     int frames;
 } pl_render_ranges;
 
-/// Copies opt into out with the automatic ranges replaced by the run's so far.
-void pl_render_ranges_apply(const pl_render_ranges *r, const pl_render_options *opt,
+/// Copies opt into out with the automatic ranges replaced by the run's so far, and notes which
+/// ranges opt (the scene's options) fixes itself, so that they are not reported as grown.
+void pl_render_ranges_apply(pl_render_ranges *r, const pl_render_options *opt,
                             pl_render_options *out);
 /// Takes in the automatic ranges of the frame just built into dl.
 struct pl_draw_list;

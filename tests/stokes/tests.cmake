@@ -33,7 +33,7 @@ pl_add_c_test(test_stokes_rungs SOURCES ${PL_TEST_DIR}/stokes/test_stokes_rungs.
 # The saturated simple shear of the 20-disc sample (scenes/stokes/simple_shear.lua) sheared to 3 %:
 # pore-pressure rise = drop of effective stress of the dry constant-volume twin (Dyvik et al. 1987).
 if(TARGET porelab)
-  add_test(NAME stokes_simple_shear_short COMMAND porelab run ${CMAKE_CURRENT_SOURCE_DIR}/stokes/simple_shear_short.lua
+  add_test(NAME stokes_simple_shear_short CONFIGURATIONS long COMMAND porelab run ${CMAKE_CURRENT_SOURCE_DIR}/stokes/simple_shear_short.lua
            --trust -q --no-frames --out ${CMAKE_CURRENT_BINARY_DIR}/stokes-out/simple_shear_short)
   set_tests_properties(stokes_simple_shear_short PROPERTIES LABELS "stokes;fluid;long" TIMEOUT 900
                        PASS_REGULAR_EXPRESSION "stokes simple shear short: ok")
