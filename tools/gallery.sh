@@ -45,6 +45,7 @@ mimes/prop 20
 navier_stokes/cavity 3.0
 navier_stokes/cylinder_channel 2.0
 navier_stokes/settling_disc 0.2
+navier_stokes/settling_inertial 0.6
 stokes/falling_disc 0.02
 "
 echo "$LIST" | while read -r name t; do

@@ -5,10 +5,13 @@
 -- measures the drag coefficient C_D at the Reynolds number Re = rho_F U 2r / eta it reaches.
 -- Reference: the steady flow past a cylinder, Dennis & Chang (1970, J. Fluid Mech. 42:471):
 -- C_D = 2.846 / 2.045 / 1.522 at Re = 10 / 20 / 40 (interpolated in log-log at the measured Re).
--- In the Stokes limit the same drag would be Lamb's, which falls off as 1/(Re ln Re): the
--- inertia of the wake is what sets the speed here (docs/navier-stokes.md, "Settling with
--- inertia"). The walls are 20 diameters away; their effect on C_D at this Re is a few per cent
--- (blockage d/W = 0.025).
+-- The speed approaches its terminal value slowly, like U(t) = U_inf - A / t (the wake behind a
+-- 2D body keeps growing): at 1.5 s it still rises by 0.8 % per 0.1 s. The run prints the drag
+-- coefficient at its last speed and at the speed extrapolated by that law from t_end / 1.5 and
+-- t_end; measured at h_near = 0.125 mm: C_D 2.12 at the last speed (Re 19.5, +2.2 % from Dennis &
+-- Chang), 1.72 at the extrapolated 10.8 mm/s (Re 21.6, -13 %). This is not yet a validation:
+-- docs/navier-stokes.md, "Settling with inertia". The walls are 20 diameters away (blockage
+-- d/W = 0.025).
 --   porelab run scenes/navier_stokes/settling_inertial.lua
 --   porelab run scenes/navier_stokes/settling_inertial.lua --param rho_p=1020   # faster, Re ~ 40
 local P = porelab.params {
@@ -17,8 +20,6 @@ local P = porelab.params {
   { name = "h_near", unit = "m", value = 1.25e-4, min = 5e-5, max = 5e-4,
     doc = "mesh size on the disc" },
   { name = "t_end", unit = "s", value = 1.5, min = 0.01, max = 10, doc = "simulated time" },
-  { name = "tolerance", unit = "1", value = 0, min = 0, max = 1,
-    doc = "if > 0, the run fails unless C_D is within this fraction of the reference (the ctest's check)" },
 }
 local R, MU, RHO_F = 1e-3, 1e-3, 1000
 local W, H = 0.08, 0.08
@@ -64,24 +65,30 @@ return {
     local drift = math.abs(us[n] - us[math.max(1, n - 10)]) / U   -- change over the last 10 frames
     local d = 2 * math.sqrt(area / math.pi)                          -- equal-area diameter
     local Wp = (P.rho_p - RHO_F) * 9.81 * area
-    local re = RHO_F * U * d / MU
-    local cd = 2 * Wp / (RHO_F * U * U * d)
+    local function coefficients(u)
+      local re = RHO_F * u * d / MU
+      return re, 2 * Wp / (RHO_F * u * u * d)
+    end
+    local re, cd = coefficients(U)
     local ref = cd_ref(re)
-    print(string.format("settling with inertia: terminal speed %.5g m/s (change over the last 0.1 s %.2g), "
+    print(string.format("settling with inertia: speed at the end %.5g m/s (change over the last 0.1 s %.2g), "
                         .. "Re = %.2f, C_D = %.4f; Dennis & Chang (1970) at this Re %.4f (%+.2f %%)",
                         U, drift, re, cd, ref, 100 * (cd / ref - 1)))
-    print(string.format("VALIDATION|fluid.ns_settling_inertial|Navier–Stokes model: disc settling at Re %.0f, "
-                        .. "drag coefficient|Dennis & Chang 1970 (steady cylinder, log-log between tabulated Re)|"
-                        .. "%.0f %%|C_D %.4f vs %.4f (%+.2f %%) at Re %.2f", re,
-                        100 * (P.tolerance > 0 and P.tolerance or 0.06), cd, ref, 100 * (cd / ref - 1), re))
+    -- U(t) = U_inf - A / t through the samples at t_end / 1.5 and t_end
+    local t2, t1 = ts[n], ts[n] / 1.5
+    local k = n
+    while k > 1 and ts[k] > t1 do k = k - 1 end
+    if ts[k] > 0 then
+      local u1 = us[k]
+      t1 = ts[k]
+      local uinf = (U * t2 - u1 * t1) / (t2 - t1)
+      local re2, cd2 = coefficients(uinf)
+      print(string.format("extrapolated (U = U_inf - A / t through t = %.3g and %.3g s): U_inf = %.5g m/s, "
+                          .. "Re = %.2f, C_D = %.4f; Dennis & Chang %.4f (%+.2f %%)", t1, t2, uinf, re2, cd2,
+                          cd_ref(re2), 100 * (cd2 / cd_ref(re2) - 1)))
+    end
     porelab.chart { file = "settling_speed.png", title = "Disc settling in water: speed against time",
                     xlabel = "time (s)", ylabel = "settling speed (m/s)", legend = "none",
                     series = { { name = "settling speed", x = ts, y = us } } }
-    if P.tolerance > 0 then
-      assert(drift < 2e-3, string.format("not yet at its terminal speed: %.2g change over the last frames", drift))
-      assert(math.abs(cd / ref - 1) < P.tolerance,
-             string.format("C_D %.4f is %.2f %% from Dennis & Chang's %.4f (tolerance %.0f %%)", cd,
-                           100 * (cd / ref - 1), ref, 100 * P.tolerance))
-    end
   end,
 }
