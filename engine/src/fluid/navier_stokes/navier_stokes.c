@@ -585,10 +585,14 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
         return st;
     }
     int moved = 0;
-    if (!m->built || !cores_equal(m, &c)) {
-        moved = m->built;
+    /* The first fluid step meshes afresh even when a host prepared a mesh before it (to draw the
+       field at t = 0, ns_prepare): preparing must not change what the steps do, so a run gives
+       the same state whether or not its frames show the fluid. */
+    const int fresh = m->nfluid == 0;
+    if (!m->built || fresh || !cores_equal(m, &c)) {
+        moved = m->built && !fresh;
         const double t0 = cpu_now();
-        if (same_topology(m, &c) && relocate(m, &c) == 0) {
+        if (!fresh && same_topology(m, &c) && relocate(m, &c) == 0) {
             adopt_cores(m, &c);
             m->st.relocations++;
             m->st.t_relocate += cpu_now() - t0;
