@@ -112,6 +112,22 @@ add_test(NAME cli_determinism COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porel
   -DSCENE=${CMAKE_SOURCE_DIR}/scenes/demo.lua -DOUT=${PL_CLI_OUT}/determinism -DSTEPS=300
   -P ${PL_CLI_DIR}/determinism.cmake)
 set_tests_properties(cli_determinism PROPERTIES LABELS cli TIMEOUT 120)
+# Drawing is read-only: frames of the fluid leave the state as a run without frames (the
+# Navier-Stokes granular step, 2 fluid steps; a Darcy scene).
+get_target_property(_pl_cli_defs porelab_engine INTERFACE_COMPILE_DEFINITIONS)
+foreach(case navier_stokes/granular_step:40:20 stokes/liquefaction:200:50 fluid_quicksand:200:50)
+  string(REPLACE ":" ";" case ${case})
+  list(GET case 0 sc)
+  list(GET case 1 n)
+  list(GET case 2 every)
+  string(REPLACE "/" "_" name ${sc})
+  if(NOT sc MATCHES "navier_stokes" OR "${_pl_cli_defs}" MATCHES "PL_HAVE_GMSH=1")
+    add_test(NAME cli_frames_neutral_${name} COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:porelab>
+      -DSCENE=${CMAKE_SOURCE_DIR}/scenes/${sc}.lua -DOUT=${PL_CLI_OUT}/frames_neutral_${name} -DSTEPS=${n}
+      -DEVERY=${every} -P ${PL_CLI_DIR}/frames_neutral.cmake)
+    set_tests_properties(cli_frames_neutral_${name} PROPERTIES LABELS cli TIMEOUT 180)
+  endif()
+endforeach()
 # Threads: serial, 1, 2 and 8 threads give the same state hash, for discs with walls and polygons
 # (run long enough that bodies carry three or more contacts: summing a body's contacts in
 # another order then changes the hash, checked by reversing the gather order in parallel.c).

@@ -589,7 +589,11 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
        field at t = 0, ns_prepare): preparing must not change what the steps do, so a run gives
        the same state whether or not its frames show the fluid. */
     const int fresh = m->nfluid == 0;
-    if (!m->built || fresh || !cores_equal(m, &c)) {
+    if (fresh && m->built) { /* the prepared mesh and its (rest) field go: nothing is carried over */
+        ns_system_free(&m->sys);
+        m->built = 0;
+    }
+    if (!m->built || !cores_equal(m, &c)) {
         moved = m->built && !fresh;
         const double t0 = cpu_now();
         if (!fresh && same_topology(m, &c) && relocate(m, &c) == 0) {
