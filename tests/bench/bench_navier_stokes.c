@@ -6,7 +6,7 @@
  * the cost split of each stationary solve (assembly, UMFPACK analysis, factorisation, solve,
  * fill of L + U), and the cost per coupled step of the model with a moving grain (remesh,
  * interpolation, assembly, factorisation, solve, forces).
- *     bench_navier_stokes [OUT_DIR]     CSV to OUT_DIR/bench_navier_stokes.csv; with PLplot the
+ *     bench_navier_stokes [OUT_DIR]     CSV to OUT_DIR/bench_navier_stokes.csv; with the app's
  *                                       charts OUT_DIR/ns_cavity_error_cpu.png, ns_dfg_error_cpu.png
  *     bench_navier_stokes --moving      only the cost per coupled step of the settling disc
  *     bench_navier_stokes --plates K L  lambda of a fixed circle between plates (k = K, ends at +-L)
@@ -18,56 +18,26 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#if PL_NS_CHART
-#include <plplot.h>
+#if BENCH_CHART
+#include "bench/bench_chart.h"
 #endif
 
 #define NMESH 4
 static const char *names[3] = {"P2+bubble/P1", "P2/P1", "MINI"};
 
-#if PL_NS_CHART
+/* one series per element: CPU time per stationary solve against the error */
 static void chart(const char *dir, const char *file, const char *ylab, const char *title, double C[3][NMESH],
                   double E[3][NMESH], int nm) {
+#if BENCH_CHART
     char path[512];
     snprintf(path, sizeof path, "%s/%s", dir, file);
-    plsdev("pngcairo");
-    plsfnam(path);
-    plsetopt("geometry", "760x520");
-    plscolbg(255, 255, 255);
-    plinit();
-    plscol0(1, 0, 0, 0);
-    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-    for (int m = 0; m < 3; m++)
-        for (int k = 0; k < nm; k++) {
-            xmin = fmin(xmin, log10(C[m][k]));
-            xmax = fmax(xmax, log10(C[m][k]));
-            ymin = fmin(ymin, log10(E[m][k]));
-            ymax = fmax(ymax, log10(E[m][k]));
-        }
-    plcol0(1);
-    plenv(floor(xmin), ceil(xmax), floor(ymin), ceil(ymax), 0, 30);
-    pllab("CPU time per stationary solve (s)", ylab, title);
-    int colors[3] = {9, 3, 8};
-    for (int m = 0; m < 3; m++) {
-        double lx[NMESH], ly[NMESH];
-        for (int k = 0; k < nm; k++) {
-            lx[k] = log10(C[m][k]);
-            ly[k] = log10(E[m][k]);
-        }
-        plcol0(colors[m]);
-        plline(nm, lx, ly);
-        plpoin(nm, lx, ly, 4);
-    }
-    int opt[3] = {PL_LEGEND_LINE, PL_LEGEND_LINE, PL_LEGEND_LINE};
-    int tc[3] = {1, 1, 1}, sty[3] = {1, 1, 1};
-    double wid[3] = {1, 1, 1};
-    double lw, lh;
-    pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0, 3,
-             opt, 1.0, 0.8, 2.0, 1.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, NULL, NULL, NULL, NULL);
-    plend();
-    printf("wrote %s\n", path);
-}
+    const double *const x[3] = {C[0], C[1], C[2]}, *const y[3] = {E[0], E[1], E[2]};
+    const int n[3] = {nm, nm, nm};
+    bench_error_cpu_chart(path, title, "CPU time per stationary solve (s)", ylab, 1, 3, names, x, y, n);
+#else
+    (void)dir, (void)file, (void)ylab, (void)title, (void)C, (void)E, (void)nm;
 #endif
+}
 
 static void moving_grain_cost(FILE *csv) {
     pl_world_def wd = pl_default_world_def();
@@ -187,10 +157,8 @@ int main(int argc, char **argv) {
                 fprintf(csv, "cavity,%s,%g,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.3f\n", names[e], ch[k], r.nunk, err, r.t_total,
                         r.st.t_assemble, r.st.t_symbolic + r.st.t_numeric, r.st.t_solve, fill);
         }
-#if PL_NS_CHART
-    chart(dir, "ns_cavity_error_cpu.png", "max error of u_min, v_min, v_max (m/s)",
-          "Lid-driven cavity Re = 100: error against CPU time", C, E, NMESH);
-#endif
+    chart(dir, "ns_cavity_error_cpu.png", "largest error of u#dmin#u, v#dmin#u, v#dmax#u (m/s)",
+          "Lid-driven cavity, Re = 100: error against CPU time", C, E, NMESH);
     const double hn[NMESH] = {0.01, 0.005, 0.0035, 0.0025}, hf[NMESH] = {0.04, 0.03, 0.025, 0.02};
     for (int e = 0; e < 3; e++)
         for (int k = 0; k < NMESH; k++) {
@@ -211,10 +179,8 @@ int main(int argc, char **argv) {
                 fprintf(csv, "dfg,%s,%g,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.3f\n", names[e], hn[k], r.nunk, err, r.t_total,
                         r.st.t_assemble, r.st.t_symbolic + r.st.t_numeric, r.st.t_solve, fill);
         }
-#if PL_NS_CHART
-    chart(dir, "ns_dfg_error_cpu.png", "relative error of c_D", "DFG 2D-1 (Re = 20): drag error against CPU time",
-          C, E, NMESH);
-#endif
+    chart(dir, "ns_dfg_error_cpu.png", "relative error of the drag coefficient c#dD#u",
+          "DFG 2D-1 cylinder, Re = 20: drag error against CPU time", C, E, NMESH);
     moving_grain_cost(csv);
     if (csv) fclose(csv);
     return 0;

@@ -10,11 +10,13 @@
  *      boundary elements (and the Darcy model started from zero pressure instead of its static
  *      field): fall velocity after 0.03 s and CPU per step.
  *     bench_stokes [OUT_DIR] [--docs FILE] [--max-discs N]
- *       CSV OUT_DIR/bench_stokes.csv; with PLplot the chart OUT_DIR/stokes_error_cpu.png;
+ *       CSV OUT_DIR/bench_stokes.csv; with the app's charts (porelab_render) OUT_DIR/stokes_error_cpu.png;
  *       --docs: the tables between FILE's "<!-- generated: bench_stokes NAME begin" and
  *       "<!-- generated: bench_stokes NAME end -->" lines are rewritten (docs/stokes.md, Cost);
  *       --max-discs: leave out the step-cost cases with more discs (400 needs about 10 GB and
- *       tens of minutes). Set OPENBLAS_NUM_THREADS=1 for CPU times of one core. */
+ *       tens of minutes). Set OPENBLAS_NUM_THREADS=1 for CPU times of one core.
+ *     bench_stokes OUT_DIR --chart-from CSV
+ *       only the chart, from the cylinder and disc rows of a bench_stokes.csv. */
 #include "stokes/stokes_cases.h"
 #include <stdarg.h>
 #include <stdio.h>
@@ -22,8 +24,8 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
-#if PL_STOKES_CHART
-#include <plplot.h>
+#if BENCH_CHART
+#include "bench/bench_chart.h"
 #endif
 
 static double cpu(void) { return (double)clock() / CLOCKS_PER_SEC; }
@@ -116,68 +118,60 @@ static int write_docs(const char *file) {
 #define NCYL 4
 #define NDISC 5
 
-#if PL_STOKES_CHART
-static void chart(const char *dir, double c1[], double e1[], int n1, double c2[], double e2[], int n2) {
+/* The chart: the §4.4.1 cylinder against its finest run, the §5.1 disc against Faxén's series */
+static void chart(const char *dir, const double c1[], const double e1[], int n1, const double c2[], const double e2[],
+                  int n2) {
+#if BENCH_CHART
     char path[512];
     snprintf(path, sizeof path, "%s/stokes_error_cpu.png", dir);
-    plsdev("pngcairo");
-    plsfnam(path);
-    plsetopt("geometry", "760x520");
-    plscolbg(255, 255, 255);
-    plinit();
-    plscol0(1, 0, 0, 0);
-    plscol0(9, 31, 78, 156);
-    plscol0(3, 155, 34, 38);
-    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-    double lx1[NCYL], ly1[NCYL], lx2[NDISC], ly2[NDISC];
-    for (int k = 0; k < n1; k++) {
-        lx1[k] = log10(c1[k]);
-        ly1[k] = log10(e1[k]);
-    }
-    for (int k = 0; k < n2; k++) {
-        lx2[k] = log10(c2[k]);
-        ly2[k] = log10(e2[k]);
-    }
-    for (int k = 0; k < n1; k++) {
-        xmin = fmin(xmin, lx1[k]);
-        xmax = fmax(xmax, lx1[k]);
-        ymin = fmin(ymin, ly1[k]);
-        ymax = fmax(ymax, ly1[k]);
-    }
-    for (int k = 0; k < n2; k++) {
-        xmin = fmin(xmin, lx2[k]);
-        xmax = fmax(xmax, lx2[k]);
-        ymin = fmin(ymin, ly2[k]);
-        ymax = fmax(ymax, ly2[k]);
-    }
-    plcol0(1);
-    plenv(floor(xmin), ceil(xmax), floor(ymin), ceil(ymax), 0, 30);
-    pllab("CPU time per solve (s)", "relative error of the drag",
-          "Boundary-element Stokes: error against CPU time");
-    plcol0(9);
-    plline(n1, lx1, ly1);
-    plpoin(n1, lx1, ly1, 4);
-    plcol0(3);
-    plline(n2, lx2, ly2);
-    plpoin(n2, lx2, ly2, 4);
-    const char *names[2] = {"4.4.1 cylinder in Poiseuille flow (vs finest)", "5.1 disc between walls (vs Faxen)"};
-    int opt[2] = {PL_LEGEND_LINE, PL_LEGEND_LINE};
-    int tc[2] = {1, 1}, sty[2] = {1, 1}, colors[2] = {9, 3}, sc[2] = {9, 3}, sn[2] = {1, 1};
-    double wid[2] = {1, 1}, ss[2] = {1, 1};
-    const char *sym[2] = {"#(728)", "#(728)"};
-    double lw, lh;
-    pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0, 2,
-             opt, 1.0, 0.8, 2.0, 0.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, sc, ss, sn, sym);
-    plend();
-    printf("wrote %s\n", path);
-}
+    const char *const names[2] = {"cylinder in Poiseuille flow between plates (against the finest mesh)",
+                                  "disc settling between walls (against Faxén's series)"};
+    const double *const x[2] = {c1, c2}, *const y[2] = {e1, e2};
+    const int n[2] = {n1, n2};
+    bench_error_cpu_chart(path, "Boundary-element Stokes: drag error against CPU time", "CPU time per solve (s)",
+                          "relative error of the drag", 4, 2, names, x, y, n);
+#else
+    (void)dir, (void)c1, (void)e1, (void)n1, (void)c2, (void)e2, (void)n2;
 #endif
+}
+
+/* --chart-from CSV: the chart again from the rows a full run wrote (bench_stokes.csv), so it
+   matches the tables of docs/stokes.md without the hour-long run */
+static int chart_from_csv(const char *csv, const char *dir) {
+    FILE *f = fopen(csv, "r");
+    if (!f) {
+        fprintf(stderr, "bench_stokes: --chart-from: cannot read %s\n", csv);
+        return 1;
+    }
+    double c1[NCYL], e1[NCYL], c2[NDISC], e2[NDISC];
+    int n1 = 0, n2 = 0, line = 0;
+    char buf[512];
+    while (fgets(buf, sizeof buf, f)) {
+        line++;
+        char name[64];
+        int el, unk;
+        double cpu_s, value, err;
+        if (sscanf(buf, "%63[^,],%d,%d,%lf,%lf,%lf", name, &el, &unk, &cpu_s, &value, &err) != 6) continue;
+        if (!strcmp(name, "cylinder_4.4.1") && n1 < NCYL) c1[n1] = cpu_s, e1[n1++] = err;
+        else if (!strcmp(name, "disc_5.1") && n2 < NDISC) c2[n2] = cpu_s, e2[n2++] = err;
+    }
+    fclose(f);
+    if (n1 != NCYL || n2 != NDISC) {
+        fprintf(stderr, "bench_stokes: --chart-from: %s has %d cylinder_4.4.1 rows (need %d) and %d disc_5.1 rows (need %d) in %d lines\n",
+                csv, n1, NCYL, n2, NDISC, line);
+        return 1;
+    }
+    chart(dir, c1, e1, n1, c2, e2, n2);
+    return 0;
+}
 
 int main(int argc, char **argv) {
-    const char *dir = ".", *docs = NULL;
+    const char *dir = ".", *docs = NULL, *chart_csv = NULL;
     int max_discs = 400;
     for (int a = 1; a < argc; a++) {
-        if (!strcmp(argv[a], "--docs") && a + 1 < argc) {
+        if (!strcmp(argv[a], "--chart-from") && a + 1 < argc) {
+            chart_csv = argv[++a];
+        } else if (!strcmp(argv[a], "--docs") && a + 1 < argc) {
             docs = argv[++a];
         } else if (!strcmp(argv[a], "--max-discs") && a + 1 < argc) {
             char *e;
@@ -190,10 +184,11 @@ int main(int argc, char **argv) {
         } else if (argv[a][0] != '-') {
             dir = argv[a];
         } else {
-            fprintf(stderr, "usage: bench_stokes [OUT_DIR] [--docs FILE] [--max-discs N]\n");
+            fprintf(stderr, "usage: bench_stokes [OUT_DIR] [--docs FILE] [--max-discs N] [--chart-from CSV]\n");
             return 2;
         }
     }
+    if (chart_csv) return chart_from_csv(chart_csv, dir);
     setvbuf(stdout, NULL, _IOLBF, 0);
     const double load0 = load_average();
     char path[512];
@@ -263,9 +258,7 @@ int main(int argc, char **argv) {
         md(0, "| %d | %d | %.3g s | %.3f | %.1e |\n", nd[i], pl_world_stokes_unknowns(w), c2[i], r.k_trans / 50, e2[i]);
         pl_world_destroy(&w);
     }
-#if PL_STOKES_CHART
     chart(dir, c1, e1, NCYL, c2, e2, NDISC);
-#endif
 
     /* 2. cost per coupled step: N discs r = 1 cm, 16 elements each, solid fraction about 0.2,
        placed on a jittered lattice (clearance at least 0.4 r). Up to 100 discs a first step

@@ -54,6 +54,8 @@ static double max_error(pl_world *w, double t) {
     return e;
 }
 
+enum { INK = 1, GRID = 2, S0 = 3 }; /* cmap0 slots: ink, grid, series S0 .. S0 + 5 */
+
 static void start(const char *dir, const char *name, int w, int h) {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", dir, name);
@@ -64,8 +66,22 @@ static void start(const char *dir, const char *name, int w, int h) {
     plsetopt("geometry", geo);
     plscolbg(255, 255, 255);
     plinit();
-    plscol0(1, 0, 0, 0);
+    /* the chart palette of app/render/charts.c: ink, light grid, series dark enough on white */
+    plscol0(INK, 34, 34, 38);
+    plscol0(GRID, 222, 222, 226);
+    static const unsigned series[6] = {0x1F5FA8, 0xC8384B, 0x2E8B57, 0xE08E1B, 0x6B4C9A, 0x555555};
+    for (int i = 0; i < 6; i++) plscol0(S0 + i, (int)(series[i] >> 16) & 255, (int)(series[i] >> 8) & 255, (int)series[i] & 255);
     printf("writing %s\n", path);
+}
+
+/* light grid at the major ticks, then the frame and its labels in ink */
+static void frame(const char *xopt, const char *yopt) {
+    plcol0(GRID);
+    plwidth(1.0);
+    plbox(strchr(xopt, 'l') ? "gl" : "g", 0, 0, strchr(yopt, 'l') ? "gl" : "g", 0, 0);
+    plcol0(INK);
+    plwidth(1.2);
+    plbox(xopt, 0, 0, yopt, 0, 0);
 }
 
 static void wave_profiles(const char *dir) {
@@ -86,37 +102,38 @@ static void wave_profiles(const char *dir) {
     }
     start(dir, "fluid_wave_profiles.png", 1200, 420);
     plssub(3, 1);
-    const int colors[5] = {9, 3, 8, 2, 1};
+    const int colors[5] = {S0, S0 + 1, S0 + 2, S0 + 3, S0 + 4};
     for (int ti = 0; ti < 3; ti++) {
         pladv(0);
-        plvpor(0.12, 0.95, 0.15, 0.85);
+        plvpor(0.23, 0.92, 0.16, 0.86); /* room for the head label left of the tick labels */
         plwind(0, 0.3, 0, 1.05);
-        plcol0(1);
-        plbox("bcnst", 0, 0, "bcnstv", 0, 0);
+        frame("bcnst", "bcnstv");
         char title[64];
         snprintf(title, sizeof title, "t = %g s", times[ti]);
-        pllab("x (m)", "head (m)", title);
+        pllab("x (m)", "", title);
+        plmtex("l", 4.2, 0.5, 0.5, "head (m)"); /* pllab's 5 character heights fall off a narrow panel */
         double xa[200], ya[200];
         for (int i = 0; i < 200; i++) { xa[i] = 0.3 * i / 199; ya[i] = erfc(xa[i] / (2 * sqrt(times[ti]))); }
-        plcol0(1);
+        plcol0(INK);
         plwidth(2.5);
         pllsty(3);
         plline(200, xa, ya);
         pllsty(1);
-        plwidth(1.2);
+        plwidth(1.6);
         for (int k = 0; k < 5; k++) {
             plcol0(colors[k]);
             plline(M[k][ti], X[k][ti], H[k][ti]);
         }
-        if (ti == 2) {
+        if (ti == 0) { /* top right of the first panel: above every curve */
             const char *txt[6] = {"erfc (analytic)", "N = 4", "N = 8", "N = 16", "N = 32", "N = 64"};
             int opt[6], col[6], sty[6];
             double wid[6];
-            for (int i = 0; i < 6; i++) { opt[i] = PL_LEGEND_LINE; col[i] = i ? colors[i - 1] : 1; sty[i] = i ? 1 : 3; wid[i] = i ? 1.2 : 2.5; }
+            for (int i = 0; i < 6; i++) { opt[i] = PL_LEGEND_LINE; col[i] = i ? colors[i - 1] : 1; sty[i] = i ? 1 : 3; wid[i] = i ? 1.6 : 2.5; }
             double lw, lh;
             int tc[6] = {1, 1, 1, 1, 1, 1};
-            pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0,
-                     6, opt, 1.0, 0.8, 2.0, 1.0, tc, (const char **)txt, NULL, NULL, NULL, NULL, col, sty, wid, NULL, NULL,
+            pllegend(&lw, &lh, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
+                     PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.01, 0.01, 0.06, 0, GRID, 1, 0, 0, 6, opt,
+                     0.6, 0.72, 1.5, 0.0, tc, (const char **)txt, NULL, NULL, NULL, NULL, col, sty, wid, NULL, NULL,
                      NULL, NULL);
         }
     }
@@ -157,10 +174,11 @@ static void error_cpu(const char *dir) {
             xmin = fmin(xmin, log10(C[m][k])); xmax = fmax(xmax, log10(C[m][k]));
             ymin = fmin(ymin, log10(E[m][k])); ymax = fmax(ymax, log10(E[m][k]));
         }
-    plcol0(1);
+    plcol0(INK);
     plenv(floor(xmin), ceil(xmax), floor(ymin), ceil(ymax), 0, 30);
-    pllab("CPU time (s)", "max error at t = 0.01", "Pressure wave: error against cost (N = 8..64, fluid step 2.5e-4 s)");
-    const int colors[3] = {9, 3, 8};
+    frame("bcnstl", "bcnstvl");
+    pllab("CPU time (s)", "max head error at t = 0.01 s (m)", "Pressure wave: error against cost (N = 8 … 64, fluid step 2.5 × 10#u−4#d s)");
+    const int colors[3] = {S0, S0 + 1, S0 + 2};
     for (int m = 0; m < 3; m++) {
         for (int k = 0; k < 4; k++) { lx[k] = log10(C[m][k]); ly[k] = log10(E[m][k]); }
         plcol0(colors[m]);
@@ -171,8 +189,9 @@ static void error_cpu(const char *dir) {
     int tc[3] = {1, 1, 1}, sty[3] = {1, 1, 1};
     double wid[3] = {1, 1, 1};
     double lw, lh;
-    pllegend(&lw, &lh, 0, PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, 1, 1, 0, 0, 3,
-             opt, 1.0, 0.8, 2.0, 1.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, NULL, NULL, NULL, NULL);
+    pllegend(&lw, &lh, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
+             PL_POSITION_RIGHT | PL_POSITION_TOP | PL_POSITION_INSIDE, 0.02, 0.02, 0.1, 0, GRID, 1, 0, 0, 3, opt, 0.8,
+             0.8, 2.0, 0.0, tc, names, NULL, NULL, NULL, NULL, colors, sty, wid, NULL, NULL, NULL, NULL);
     plend();
 }
 
@@ -243,20 +262,23 @@ static void porosity_cost(const char *dir) {
     start(dir, "fluid_porosity_cost.png", 700, 500);
     double lx[6], ly[6];
     for (int k = 0; k < 6; k++) { lx[k] = log10(tim[k]); ly[k] = log10(err[k]); }
-    plcol0(1);
+    plcol0(INK);
     plenv(floor(fmin(lx[0], log10(t_exact))), ceil(lx[5]), -4, 0, 0, 30);
+    frame("bcnstl", "bcnstvl");
     pllab("time per porosity update (s)", "mean |solid area error| / element area",
-          "Porosity: pixellation (2..64 px) against exact clipping");
-    plcol0(9);
+          "Porosity: pixellation (2 … 64 px) against exact clipping");
+    plcol0(S0);
     plline(6, lx, ly);
     plpoin(6, lx, ly, 4);
     for (int k = 0; k < 6; k++) {
+        /* right of its marker; a label that would run past the frame's right edge goes left of it */
         char lab[16];
-        snprintf(lab, sizeof lab, " %d px", res[k]);
-        plptex(lx[k], ly[k], 1, 0, 0, lab);
+        int left = lx[k] > ceil(lx[5]) - 0.35;
+        snprintf(lab, sizeof lab, left ? "%d px  " : "  %d px", res[k]);
+        plptex(lx[k], ly[k], 1, 0, left ? 1.0 : 0.0, lab);
     }
     double ex_x[2] = {log10(t_exact), log10(t_exact)}, ex_y[2] = {-4, 0};
-    plcol0(3);
+    plcol0(S0 + 1);
     pllsty(2);
     plline(2, ex_x, ex_y);
     pllsty(1);

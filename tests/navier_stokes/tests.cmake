@@ -26,12 +26,11 @@ set_tests_properties(test_ns_world_long PROPERTIES LABELS "navier_stokes;physics
 add_executable(bench_navier_stokes ${PL_TEST_DIR}/bench/bench_navier_stokes.c)
 target_include_directories(bench_navier_stokes PRIVATE ${PL_TEST_DIR} ${CMAKE_SOURCE_DIR}/engine/src)
 target_link_libraries(bench_navier_stokes PRIVATE porelab_engine)
-find_library(PL_NS_PLPLOT_LIB plplot)
-find_path(PL_NS_PLPLOT_INCLUDE plplot.h PATH_SUFFIXES plplot)
-if(PL_NS_PLPLOT_LIB AND PL_NS_PLPLOT_INCLUDE)
-  target_compile_definitions(bench_navier_stokes PRIVATE PL_NS_CHART=1)
-  target_include_directories(bench_navier_stokes PRIVATE ${PL_NS_PLPLOT_INCLUDE})
-  target_link_libraries(bench_navier_stokes PRIVATE ${PL_NS_PLPLOT_LIB})
+if(TARGET porelab_render) # the charts through the app's charts (house style)
+  target_sources(bench_navier_stokes PRIVATE ${PL_TEST_DIR}/bench/bench_chart.c)
+  target_compile_definitions(bench_navier_stokes PRIVATE BENCH_CHART=1)
+  target_include_directories(bench_navier_stokes PRIVATE ${CMAKE_SOURCE_DIR}/app/render)
+  target_link_libraries(bench_navier_stokes PRIVATE porelab_render)
 endif()
 # The granular step (scenes/navier_stokes/granular_step.lua, seed 004 §6.3) run whole, 0.7 s
 # after the release (~3.5 min CPU, label long): the grains must come to rest without residual

@@ -101,13 +101,13 @@ int main(int argc, char **argv) {
 #ifdef PL_SOLID_CHART
         double rx[2] = {0.8, 5.2}, ry[2] = {COOK_REF, COOK_REF};
         pl_chart_series se[4] = {
-            {"FIC triangles (p, pi linear)", hx, u[0], nm, PL_SERIES_LINE_POINTS, {0, 0, 0, 0}, 0},
+            {"FIC triangles (p, #gp linear)", hx, u[0], nm, PL_SERIES_LINE_POINTS, {0, 0, 0, 0}, 0},
             {"Q1/P0 quadrilaterals", hx, u[1], nm, PL_SERIES_LINE_POINTS, {0, 0, 0, 0}, 0},
             {"plain linear triangles", hx, u[2], nm, PL_SERIES_LINE_POINTS, {0, 0, 0, 0}, 0},
             {"reference 7.77", rx, ry, 2, PL_SERIES_DASHED, {0, 0, 0, 255}, 1.5}};
         pl_chart_def cd = pl_default_chart_def();
-        cd.title = "Cook's membrane, nu = 0.4999: tip vertical displacement";
-        cd.xlabel = "refinement: log2(elements per side), 2 to 32 elements";
+        cd.title = "Cook's membrane, #gn = 0.4999: tip vertical displacement";
+        cd.xlabel = "refinement: log#d2#u(elements per side), 2 to 32 elements";
         cd.ylabel = "tip vertical displacement (length units)";
         cd.series = se;
         cd.series_count = 4;
