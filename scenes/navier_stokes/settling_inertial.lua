@@ -48,10 +48,10 @@ local area = w:body(disc:index()):mass() / P.rho_p      -- the 96-gon core's are
 return {
   world = w,
   run = { t_end = P.t_end, every = 2 * EVERY },
-  render = { size = { 720, 720 }, camera = { -0.012, H - 0.05, 0.012, H - 0.002 },
+  render = { size = { 640, 720 }, camera = { -0.009, H - 0.030, 0.009, H - 0.006 },
              layers = "bodies,pressure,velocity,colorbar,title,time,scalebar",
              fluid_field = "speed", fluid_range = { 0, 0.012 }, velocity_scale = 0.3,
-             title = "Disc settling in water at Re ≈ 20: fluid speed" },
+             title = "Disc settling in water, Re ≈ 20" },
   on_frame = function(world)
     local _, vy = disc:velocity()
     local _, y = disc:position()
