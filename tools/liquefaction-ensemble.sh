@@ -47,7 +47,7 @@ awk -F, '
     crit[n] = v("criteria_met")
   }
   END {
-    print "| amplitude | seed | loose wet r_u: peak during shaking / mean of its last second | dense wet r_u peak | building settlement loose wet / dry / dense, mm | pipe rise loose wet / dry, mm | criteria met | CPU s |"
+    print "| amplitude | seed | loose wet r_u: peak during shaking / left at the end (0.8 s after the shaking) | dense wet r_u peak | building settlement loose wet / dry / dense, mm | pipe rise loose wet / dry, mm | criteria met | CPU s |"
     print "|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= n; i++) {
       if (st[i] != 0) { printf "| %.2f g | %s | run failed (exit %s) | | | | | |\n", amp[i] / 10, seed[i], st[i]; continue }

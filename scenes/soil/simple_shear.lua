@@ -304,9 +304,30 @@ local function record(world)
   end
 end
 
+-- The lids are steered from this hook: at each call every lid gets the velocity that lands it on
+-- its schedule at the next call, and the stresses are sampled. A quarter of a cycle lasts
+-- GAMMA_CYC / RATE = 5 ms and each checkpoint averages +-0.5 ms, so the hook must be called at
+-- least every 1 / FPS = 1 ms. Called less often (porelab run --fps 30, 100 or 200 was tried),
+-- a lid kept its velocity for the whole interval and overshot the schedule many times over:
+-- the grains were crushed into the walls and the run stopped at the overlap guard (50 % of a
+-- radius). Such a run is refused here, at the second call, with the reason.
+local t_last
 local function on_frame(world)
-  -- lid velocity that lands each lid on its schedule at the next frame
-  local t, tn = world:time(), world:time() + 1 / FPS
+  local t = world:time()
+  local dt_f = 1 / FPS
+  if t_last and t > t_last then
+    dt_f = t - t_last
+    if dt_f > (1 + 1e-6) / FPS then
+      error(string.format("simple_shear: the hook is called every %.3g ms (--fps or --every); the lids are steered "
+        .. "and the stresses sampled from it, which needs a call at least every %.3g ms: --fps must be in [%d, 10000] "
+        .. "frames/s, or --every in [1, %d] steps of %g s (or neither: the scene runs at %d frames/s)",
+        1e3 * dt_f, 1e3 / FPS, FPS, math.floor(1 / (FPS * DT) + 0.5), DT, FPS))
+    end
+    if math.abs(dt_f * FPS - 1) < 1e-6 then dt_f = 1 / FPS end   -- the scene's own rate, free of round-off
+  end
+  t_last = t
+  -- lid velocity that lands each lid on its schedule at the next call
+  local tn = t + dt_f
   for _, b in ipairs(boxes) do
     local x = b.lid:position()
     drive(b, (b.x0 + lid_x_target(b, tn) - x) / (tn - t))

@@ -33,6 +33,14 @@ foreach(scene IN LISTS pl_scenes)
     ARGS run ${scene} --steps 200 --quiet --out ${PL_CLI_OUT}/scene_${sname})
 endforeach()
 
+# The simple-shear scene steers its lids from on_frame and needs a call every 1 ms: a coarser
+# --fps is refused with the valid range at the second call (it used to crush the grains into the
+# walls and stop at the overlap guard), docs/soil.md §5.4.
+pl_cli_test(soil_simple_shear_low_fps RC 1
+  ARGS run scenes/soil/simple_shear.lua --fps 200 --no-frames --quiet --out ${PL_CLI_OUT}/soil_simple_shear_low_fps
+  MATCH "simple_shear.lua:[0-9]+: simple_shear: the hook is called every 5 ms .*--fps must be in \\[1000, 10000\\] frames/s, or --every in \\[1, 1000\\] steps"
+  NOMATCH "overlap by")
+
 # Bad input: one clear message with file:line, the argument and the valid range; exit 1.
 pl_cli_test(bad_negative_radius RC 1 ARGS run ${PL_BAD}/neg_radius.lua --quiet
   MATCH "^porelab: tests/cli/bad/neg_radius.lua:4: disc: radius must be a finite number in \\(0, 1000000\] m \\(got -1\\)\n$")

@@ -3,8 +3,9 @@
 -- at every checkpoint (strains 2..12.5 % monotonic; each cycle's positive peak and end, cyclic)
 -- the pore-pressure rise of the sealed saturated sample equals the drop of the vertical
 -- effective stress of the dry constant-volume sample within TOL sigma'_v0, and over the whole
--- record rms(du - drop) <= TOL_RMS sigma'_v0. Measured (default run): worst point 0.023,
--- rms 0.014 (cyclic) and 0.020 / 0.012 (monotonic); tolerance twice the worst measured.
+-- record rms(du - drop) <= TOL_RMS sigma'_v0. Measured (default run): worst point 0.005,
+-- rms 0.003 (cyclic) and 0.012 / 0.004 (monotonic); the tolerance was set at twice the worst
+-- measured with an earlier build (0.023) and kept: the uncoupled run's worst point is 0.114.
 -- Needs --trust (it loads the scene from another folder). SIMPLE_SHEAR may be preset by a
 -- wrapper (the short version below sets it).
 SIMPLE_SHEAR = SIMPLE_SHEAR or {}
