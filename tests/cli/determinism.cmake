@@ -1,17 +1,10 @@
 # Determinism: the same scene run twice gives the same state hash, and the hash does change
 # when the state does (one step more), so a constant hash cannot pass.
 #   cmake -DEXE=porelab -DSCENE=scene.lua -DOUT=dir -DSTEPS=200 -P determinism.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/state_hash.cmake)
 function(run_hash steps var)
-  execute_process(COMMAND ${EXE} run ${SCENE} --steps ${steps} --quiet --hash --every 1000000
-                          --out ${OUT}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "run failed (${rc}): ${out}${err}")
-  endif()
-  if(NOT out MATCHES "state-hash: ([0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f][0-9a-f])\n")
-    message(FATAL_ERROR "no 'state-hash: <16 hex digits>' line in: ${out}")
-  endif()
-  set(${var} ${CMAKE_MATCH_1} PARENT_SCOPE)
+  pl_state_hash(h --steps ${steps} --every 1000000)
+  set(${var} ${h} PARENT_SCOPE)
 endfunction()
 run_hash(${STEPS} first)
 run_hash(${STEPS} second)

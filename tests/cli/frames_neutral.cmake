@@ -2,16 +2,10 @@
 # same run without frames (a model's preparation for the first picture must not change what the
 # steps do), and the hash does change with one step more, so a constant hash cannot pass.
 #   cmake -DEXE=porelab -DSCENE=scene.lua -DOUT=dir -DSTEPS=40 -DEVERY=20 -P frames_neutral.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/state_hash.cmake)
 function(run_hash steps var)
-  execute_process(COMMAND ${EXE} run ${SCENE} --steps ${steps} --quiet --hash ${ARGN} --out ${OUT}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "run failed (${rc}): ${out}${err}")
-  endif()
-  if(NOT out MATCHES "state-hash: ([0-9a-f]+)\n")
-    message(FATAL_ERROR "no 'state-hash:' line in: ${out}")
-  endif()
-  set(${var} ${CMAKE_MATCH_1} PARENT_SCOPE)
+  pl_state_hash(h --steps ${steps} ${ARGN})
+  set(${var} ${h} PARENT_SCOPE)
 endfunction()
 run_hash(${STEPS} drawn --every ${EVERY} --size 160x90 --layers bodies,pressure,velocity,mesh)
 run_hash(${STEPS} plain --no-frames)

@@ -3,21 +3,14 @@
 # hash, bit for bit (as Box2D's determinism test compares worker counts); one step more
 # changes it, so a constant hash cannot pass.
 #   cmake -DEXE=porelab -DSCENE=scene.lua -DOUT=dir -DSTEPS=300 -P threads.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/state_hash.cmake)
 function(run_hash steps threads var)
   set(extra)
   if(threads)
     set(extra --threads ${threads})
   endif()
-  execute_process(COMMAND ${EXE} run ${SCENE} --steps ${steps} --quiet --hash --every 1000000
-                          --out ${OUT} ${extra}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "run with threads '${threads}' failed (${rc}): ${out}${err}")
-  endif()
-  if(NOT out MATCHES "state-hash: ([0-9a-f]+)\n")
-    message(FATAL_ERROR "no 'state-hash:' line in: ${out}")
-  endif()
-  set(${var} ${CMAKE_MATCH_1} PARENT_SCOPE)
+  pl_state_hash(h --steps ${steps} --every 1000000 ${extra})
+  set(${var} ${h} PARENT_SCOPE)
 endfunction()
 run_hash(${STEPS} "" serial)
 foreach(n 1 2 8)
