@@ -26,11 +26,7 @@ local function build()
   local xr = box.right:position()
   local _, yt = box.top:position()
   box.top:set_state { position = { 0.5 * (xl + xr), yt + L } }
-  local surface = 0
-  for _, d in ipairs(s.discs) do
-    local _, y = d:position()
-    surface = math.max(surface, y + d:radius())
-  end
+  local surface = rock.surface(s.discs)
   -- the left wall (length 0.5 L) is lowered below the cut: the tool comes in from the left
   box.left:set_state { position = { xl, surface - DEPTH - 2e-3 - 0.25 * L } }
   rock.rest(w, 1e-5, 5000)
