@@ -37,11 +37,7 @@ local xl = box.left:position()
 local xr = box.right:position()
 local _, yt = box.top:position()
 box.top:set_state { position = { 0.5 * (xl + xr), yt + L } }
-local surface = 0
-for _, d in ipairs(s.discs) do
-  local _, y = d:position()
-  surface = math.max(surface, y + d:radius())
-end
+local surface = rock.surface(s.discs)
 -- the left wall (length 0.5 L) is lowered below the deepest cut: the tool comes in from the left
 local wall_top = surface - P.passes * P.depth * 1e-3 - 3e-3
 box.left:set_state { position = { xl, wall_top - 0.25 * L } }

@@ -184,6 +184,16 @@ function rock.slope(x, y, key, lo, hi)
   return (n * sxy - sx * sy) / (n * sxx - sx * sx)
 end
 
+--- Height of the top of a list of discs: the largest y + r (m).
+function rock.surface(discs)
+  local top = 0
+  for _, d in ipairs(discs) do
+    local _, y = d:position()
+    top = math.max(top, y + d:radius())
+  end
+  return top
+end
+
 --- Mean position of a list of discs (those not removed).
 function rock.centroid(w, list)
   local sx, sy, n = 0, 0, 0
