@@ -44,7 +44,7 @@ end
 
 local ts, us = {}, {}
 local csv = porelab.csv("settling.csv", { "t_s", "speed_m_per_s", "y_m" })
-local area = w:body(disc:index()):mass() / P.rho_p      -- the 96-gon core's area
+local area = disc:mass() / P.rho_p                     -- the disc's area (per m of depth)
 return {
   world = w,
   run = { t_end = P.t_end, every = 2 * EVERY },

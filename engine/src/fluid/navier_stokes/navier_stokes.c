@@ -594,7 +594,7 @@ static pl_status fluid_step(pl_ns *m, pl_world *w, const pl_grain_view *g, doubl
         m->built = 0;
     }
     if (!m->built || !cores_equal(m, &c)) {
-        moved = m->built && !fresh;
+        moved = m->built;
         const double t0 = cpu_now();
         if (!fresh && same_topology(m, &c) && relocate(m, &c) == 0) {
             adopt_cores(m, &c);
