@@ -31,20 +31,27 @@ pl_cli_test(compare_usage RC 2 ARGS compare --bogus MATCH "unknown option '--bog
 # Stability sweeps: the measured failure boundary against the computed limit. The grain step in
 # translation fails between 0.99 and 1.01 of the computed limit; the undrained staggering
 # between 0.9 and 1.0 (the chart in docs/compare/ shows both sides).
+# The grain step's coupled modes (docs/stability.md, "The grain step"): a disc sticking on a
+# floor (sliding and turning, omega^2 = ks (1/m + r^2/I)) and a square sticking on its face
+# (sliding and rocking on the area law's springs) fail between 0.99 and 1.01 of the computed step.
+pl_cli_test(stability_grain_rotation RC 0
+  ARGS compare ${PL_CMP}/stability/grain_rotation.lua ${PL_CMP}/stability/polygon_rocking.lua --out ${PL_CLI_OUT}/stability_rot
+  MATCH "Grain step, rotation [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\|"
+  MATCH2 "Grain step, polygon sticking [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\|")
 pl_cli_test(stability_sweeps RC 0
   ARGS compare ${PL_CMP}/stability/grain_translation.lua ${PL_CMP}/stability/undrained_stagger.lua --out ${PL_CLI_OUT}/stability
   MATCH "Grain step, translation [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\|"
   MATCH2 "staggering [^|]*\\| [0-9.e-]+ s \\| 0.9[05]? \\| (0.95|1) \\|")
 
 # The servo wall on one stiff contact fails between 0.99 and 1.01 of its computed gain limit
-# 2 F / (k dt); a polygon face on the floor between 0.5 and 0.55 of the grain step's computed
-# limit 2 sqrt(m / kn) (the area law's face spring is stiffer than kn); the Stokes drag coupling
+# 2 F / (k dt); a polygon face on the floor between 0.99 and 1.01 of the grain step's computed
+# limit (the area law's face spring kn L / h, docs/stability.md); the Stokes drag coupling
 # between 0.9 and 0.94 of 2 m / K; the explicit solid runs stably up to 0.99 of its critical
 # step and is refused above it (docs/stability.md).
 pl_cli_test(stability_sweeps_more RC 0
   ARGS compare ${PL_CMP}/stability/servo_gain.lua ${PL_CMP}/stability/polygon_area.lua
        ${PL_CMP}/stability/stokes_drag.lua ${PL_CMP}/stability/solid_step.lua --out ${PL_CLI_OUT}/stability_more
-  MATCH "Servo wall [^|]*\\| 20 m/s \\| 0.99 \\| 1.01 \\|.*Grain step, polygon [^|]*\\| [0-9.e-]+ s \\| 0.5 \\| 0.55 \\|"
+  MATCH "Servo wall [^|]*\\| 20 m/s \\| 0.99 \\| 1.01 \\|.*Grain step, polygon on [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\|"
   MATCH2 "Stokes drag coupling [^|]*\\| [0-9.e-]+ s \\| 0.9 \\| 0.94 \\|.*Explicit FE solid [^|]*\\| [0-9.e-]+ s \\| 0.99 \\| 1.01 \\| refused")
 
 # The Navier-Stokes drag coupling (label navier_stokes; ~20 s CPU): stable up to the computed
@@ -63,7 +70,7 @@ pl_cli_test(guard_grain_step RC 1 ARGS run tests/cli/bad/unstable.lua --quiet --
 pl_cli_test(guard_servo_gain RC 1 ARGS run ${PL_CMP}/guards/servo_gain.lua --quiet --out ${PL_CLI_OUT}/guard_servo
   MATCH "unstable servo: body 3 .*G k dt / F = 20 exceeds its stability limit 2 .*a safe gain is G <= F / \\(k dt\\) = 10 m/s")
 pl_cli_test(guard_polygon_step RC 1 ARGS run ${PL_CMP}/guards/polygon_step.lua --quiet --out ${PL_CLI_OUT}/guard_polygon
-  MATCH "unstable: .*likely cause: the time step [0-9.e-]+ s is 0.8 times the critical step .*a safe step is [0-9.e-]+ s")
+  MATCH "unstable: .*likely cause: the time step [0-9.e-]+ s is 1.2 times the critical step [0-9.e-]+ s \\(body 2, polygon face\\).*a safe step is [0-9.e-]+ s")
 pl_cli_test(guard_stokes_drag RC 1 ARGS run ${PL_CMP}/guards/stokes_drag.lua --quiet --out ${PL_CLI_OUT}/guard_stokes_drag
   MATCH "stokes: explicit drag unstable .*needs solve_every x dt < 2 min\\(m/K, I/K_rot\\) = 0.00248[0-9]* s, but it is 1 x 0.003 s; use dt <= [0-9.e-]+ s")
 pl_cli_test(guard_solid_step RC 1 ARGS run ${PL_CMP}/guards/solid_step.lua --quiet --out ${PL_CLI_OUT}/guard_solid
@@ -125,6 +132,7 @@ add_custom_target(compare_docs
           tests/compare/problems/wave.lua tests/compare/problems/terzaghi.lua tests/compare/problems/restitution.lua
           tests/compare/problems/energy.lua tests/compare/stability/grain_translation.lua
           tests/compare/stability/grain_rotation.lua tests/compare/stability/polygon_area.lua
+          tests/compare/stability/polygon_rocking.lua
           tests/compare/stability/undrained_stagger.lua tests/compare/stability/servo_gain.lua
           tests/compare/stability/stokes_drag.lua tests/compare/stability/ns_drag.lua
           tests/compare/stability/solid_step.lua

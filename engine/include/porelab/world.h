@@ -249,9 +249,10 @@ double pl_world_dt(pl_world *w);
 /// Critical time step estimate and what limits it.
 typedef struct pl_dt_report {
     double dt;             ///< time step that will be used, s
-    double dt_critical;    ///< smallest critical step, s (2 sqrt(m/k) over bodies and materials)
+    double dt_critical;    ///< smallest critical step, s: 2 / omega_max over bodies and materials,
+                           ///< reduced by damping (docs/stability.md, "The grain step")
     int limiting_body;     ///< body index giving dt_critical (-1 if none)
-    const char *limit_kind;///< "translation" or "rotation"
+    const char *limit_kind;///< "translation", "rotation" (discs' shear spring), "polygon face", or a model's name
     int capped;            ///< 1 when MAX_DT_CR capped the step
     int fixed;             ///< 1 when the scene set dt explicitly
 } pl_dt_report;

@@ -376,3 +376,7 @@ double pl__contact_polygon(const pl_world *w, pl_pair *p, const pl_pair_params *
     o->ratio = rmin > 0 ? depth / rmin : 0;
     return mx(keff, kt);
 }
+
+/* The damping ratio the area law uses for a pair of restitution damping ratio zeta (for the
+ * time-step estimate, timestep.c). */
+double pl__polygon_cutoff_zeta(double zeta) { return cutoff_zeta(zeta); }

@@ -12,4 +12,7 @@
  * Also returns the effective normal stiffness of the contact (N/m) for time-step estimates,
  * or 0 when not touching. */
 double pl__contact_polygon(const pl_world *w, pl_pair *p, const pl_pair_params *pp, double dt, pl_contact_out *o);
+/* The area law's damping ratio zeta' for a pair whose restitution gives zeta (a flat contact
+ * with the cutoff |F_da| <= F_el then rebounds with that restitution). */
+double pl__polygon_cutoff_zeta(double zeta);
 #endif

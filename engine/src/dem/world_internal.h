@@ -240,6 +240,8 @@ void pl__apply_motion_laws(pl_world *w, double t, double dt);
 
 /* Time step */
 void pl__compute_dt(pl_world *w);
+/* Largest eigenvalue of a symmetric 3 x 3 matrix (timestep.c: the polygon face mode). */
+double pl__sym3_max_eig(double a11, double a22, double a33, double a12, double a13, double a23);
 
 /* Bonds, heat and wear (bond.c, heat.c): bond forces after the contacts; heat and wear of
    the step's contacts; removal of worn grains after the step; the bonds' stiffest body for

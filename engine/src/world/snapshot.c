@@ -249,7 +249,7 @@ size_t pl_snapshot_bytes(const pl_snapshot *s) { return s->bytes; }
 pl_status pl__grains_restore(pl_world *w, const pl_snapshot *s) { return restore_grains(w, s); }
 
 /* dt_report.limit_kind points at one of these string literals: the image keeps its index */
-static const char *const LIMIT_KINDS[] = {"none", "translation", "rotation"};
+static const char *const LIMIT_KINDS[] = {"none", "translation", "rotation", "polygon face"};
 #define NLIMIT ((int)(sizeof LIMIT_KINDS / sizeof LIMIT_KINDS[0]))
 
 uint64_t pl__grains_layout(uint64_t h) {
