@@ -392,11 +392,11 @@ foreach(case "demo;scenes/demo.lua;600;250" "quicksand;scenes/fluid_quicksand.lu
 endforeach()
 pl_cli_test(restart_save_every RC 0
   ARGS run scenes/demo.lua --steps 300 --every 1000000 --quiet --save-every 0.02 --out ${PL_CLI_OUT}/restart_every
-  EXPECT_FILE ${PL_CLI_OUT}/restart_every/state_0.020125.plstate)
+  EXPECT_FILE ${PL_CLI_OUT}/restart_every/state_0.020119.plstate)
 pl_cli_test(restart_bad_save_at RC 2 ARGS run scenes/demo.lua --steps 10 --quiet --save-at 0.1,soon
   MATCH "porelab run: --save-at must be a comma list of times in s or 'end' \\(got '0.1,soon'\\)")
 pl_cli_test(restart_other_scene RC 1
-  ARGS run scenes/heaps.lua --steps 10 --quiet --resume ${PL_CLI_OUT}/restart_demo/first/state_0.057831.plstate
+  ARGS run scenes/heaps.lua --steps 10 --quiet --resume ${PL_CLI_OUT}/restart_demo/first/state_0.040893.plstate
        --out ${PL_CLI_OUT}/restart_other
   MATCH "--resume .*: load state: the file is of a world with [0-9]+ bodies.*this one has")
 set_tests_properties(cli_restart_other_scene PROPERTIES DEPENDS cli_restart_demo)

@@ -309,8 +309,10 @@ static int determinism_same_hash(void) {
 /* A pile settling with friction: every joule is accounted for. Dissipation is measured as the
    work of the dashpot and Coulomb-spring force parts with the mid-step velocities (the
    identity the central difference satisfies for kinetic energy), so the balance closes to the
-   scheme's accuracy: measured 5e-4 of the energy exchanged at dt = 0.1 x critical and 5e-6 at
-   0.02 (it was 2.8 % when the slip was tallied from the spring's trial force). */
+   scheme's accuracy. Measured, as a fraction of the energy exchanged, with the coupled
+   sliding-turning limit of the critical step (docs/stability.md): 7e-3 at dt = 0.4 x critical,
+   7e-4 at 0.2, 6e-6 at 0.1, 2e-6 at 0.05 (round-off and the pile's last motions set the floor
+   below 0.1); it was 2.8 % when the slip was tallied from the spring's trial force. */
 static double settle_balance(double safety, double mu, double *dissipated) {
     pl_world *w = random_box(5, 300);
     w->def.dt_safety = safety;
@@ -327,14 +329,14 @@ static double settle_balance(double safety, double mu, double *dissipated) {
 }
 
 static int energy_balance_settling(void) {
-    double d0, d1, d2;
+    double d0, d1, d4;
     const double b0 = settle_balance(0.1, 0.0, &d0);
     ENSURE(fabs(b0) < 1e-3 * d0);
-    const double b1 = settle_balance(0.1, 0.5, &d1), b2 = settle_balance(0.02, 0.5, &d2);
+    const double b4 = settle_balance(0.4, 0.5, &d4), b1 = settle_balance(0.1, 0.5, &d1);
     pl_validation("grains.energy_balance", "energy balance, pile settling with friction", "every joule accounted",
-                  "2e-3 of energy exchanged", "%.1e (dt 0.1 × crit), %.1e (0.02)", fabs(b1) / d1, fabs(b2) / d2);
+                  "2e-3 of energy exchanged", "%.1e (dt 0.1 × crit), %.1e (0.4)", fabs(b1) / d1, fabs(b4) / d4);
     ENSURE(fabs(b1) < 2e-3 * d1);
-    ENSURE(fabs(b2) < 0.1 * fabs(b1)); /* converges with dt */
+    ENSURE(fabs(b1) / d1 < 0.1 * fabs(b4) / d4); /* converges with dt (second order: 1/16) */
     return 0;
 }
 

@@ -14,9 +14,10 @@
 # coordination 3.23-3.33 (s.d. 1.2 %), mean normal contact force 10.4-13.0 N (s.d. 8 %).
 #  - coordination: within 4 % (3 s.d. of the seed-to-seed spread). Halving the friction in the
 #    LAMMPS input gives 3.50 against porelab's 3.26 (+7 %) and fails.
-#  - mean normal contact force: within 5 %. Both runs start from the same rain and carry the
-#    same weight; measured 0.2 %. A wrong mass (LAMMPS' sphere mass instead of the disc's) or
-#    gravity changes it by orders of magnitude.
+#  - mean normal contact force: within 25 % (3 s.d. of the seed-to-seed spread, as for the
+#    coordination). Both runs carry the same weight, but how it is shared among the contacts is
+#    the packing's (measured 0.2 % and, with a smaller grain step, 10 %). A wrong mass (LAMMPS'
+#    sphere mass instead of the disc's) or gravity changes it by orders of magnitude.
 #  - stiffness: LAMMPS' own pair forces over k_N x the overlaps from its positions: within 1 %
 #    (the damping part of a settled contact is tiny).
 #  - serial and -np 2: same diagnostics within the same tolerances (domain decomposition
@@ -71,8 +72,8 @@ check() { # name measured reference relative-tolerance
 }
 check "coordination (serial)" "$lz" "$pz" 0.04
 check "coordination (-np 2)" "$nz" "$pz" 0.04
-check "mean contact force (serial)" "$lf" "$pf" 0.05
-check "mean contact force (-np 2)" "$nf" "$pf" 0.05
+check "mean contact force (serial)" "$lf" "$pf" 0.25
+check "mean contact force (-np 2)" "$nf" "$pf" 0.25
 # k_N = 1e6 N/m in settle.lua: LAMMPS' forces against its overlaps
 check "stiffness F/overlap (serial)" "$(awk -v f="$lf" -v o="$lo" 'BEGIN { print f / o }')" 1e6 0.01
 check "stiffness F/overlap (-np 2)" "$(awk -v f="$nf" -v o="$no" 'BEGIN { print f / o }')" 1e6 0.01
