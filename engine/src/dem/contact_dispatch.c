@@ -61,6 +61,7 @@ static void eval_range(void *ctx, int begin, int end) {
         case PL_PAIR_DISC_DISC:
         case PL_PAIR_DISC_SEGMENT: {
             pl_contact_out o;
+            o.es = o.en = o.ratio = 0; /* set by the law (PL_OUT_LAW); zero for a release or no contact */
             if (p->kind == PL_PAIR_DISC_DISC) pl__contact_disc_disc(&c, p, pp, t->dt, &o, 0);
             else pl__contact_disc_segment(&c, w, p, pp, t->dt, &o, 0);
             t->flag[k] = (uint16_t)o.add.flags;
