@@ -116,7 +116,7 @@ end
 
 return {
   name = "grain_column",
-  label = "grain column under a piston (grains + Darcy consolidation)",
+  label = "grain column under a piston, Darcy consolidation",
   model = "dem+darcy",
   problems = {
     terzaghi = { knob = "discs across the column", unit = "1", values = { 3, 4, 6, 8, 12 }, measure = measure },

@@ -38,7 +38,7 @@ end
 return {
   name = "terzaghi",
   title = "Terzaghi consolidation of a column (grain-free and grain columns)",
-  quantity = "excess pore pressure at the sealed end / initial, T_v = 0.2",
+  quantity = "u / u#d0#u at the sealed end, T#dv#u = 0.2",
   unit = "1",
   reference = { value = terzaghi_bottom(ctx.Tv),
                 source = "Terzaghi 1925; series of Verruijt, Soil Mechanics, eq. 15.17" },
