@@ -23,11 +23,12 @@
 --      excess pore pressure under the piston (the sealed end), mean of four points across,
 --      divided by the initial one u0 = B DP, is the measured value.
 -- Resolution knob: discs across the column (the column's height grows with it; the fluid
--- mesh's elements are two discs wide and about two discs tall: the mesh averages over the
--- grains, and elements one disc across make the porosity jump from element to element: with
--- them the 6- and 8-disc columns were 165 % off). The grain step is 0.1 of the critical step
--- (the values agree with 0.05 to 3e-5; at 0.2 the 6- and 8-disc columns were 0.4 % off, and an
--- 8-disc column with half the conductivity grew unstable, u to 1.7 u0).
+-- mesh's elements are two discs wide and about two discs tall; elements of one disc gave
+-- +0.32 % and +0.57 % for 4 and 6 discs across, against +0.22 % and +0.04 %). The grain step is
+-- 0.1 of the critical step: the values agree with 0.05 to 3e-5; at 0.2 the 6- and 8-disc
+-- columns were 0.4 % off, and with a finer mesh or half the conductivity they grew unstable
+-- (u up to 2 u0) without any guard stopping them. Halving or doubling D moves the values by at
+-- most 0.2 % (the piston's ringing at the start).
 --
 -- A test may set the global GRAIN_COLUMN = { coupling = false } to run the same column with
 -- the pore pressure not coupled to the skeleton (tests/compare/guards/grain_column_uncoupled.lua).
