@@ -24,6 +24,19 @@ pl_cli_test(compare_settling_stokes RC 0
   ARGS compare ${PL_CMP}/problems/settling.lua --only stokes --quick --out ${PL_CLI_OUT}/compare_settling_stokes
   MATCH "stokes +elements per disc = 8 +value [0-9.e-]+ +error 0.0[0-6][0-9]* "
   MATCH2 "stokes +elements per disc = 16 +value [0-9.e-]+ +error 0.0[0-1][0-9]* ")
+# Terzaghi consolidation measured on grain columns (tests/compare/methods/grain_column.lua: a
+# lattice of discs under a piston, its c_v from its own drained loading): u / u0 at the sealed
+# end at T_v = 0.2 within 2 % of Terzaghi's series (Terzaghi 1925; Verruijt, Soil Mechanics,
+# eq. 15.17: 0.7723) with 3 and 4 discs across. Over the whole ladder (3-12 discs) the errors
+# were -0.74 % to +0.51 % (docs/compare.md). Without the coupling (FLUID_CONSOLIDATION 0) the
+# same column gives u = 0, error 1: the criterion fails (compare_terzaghi_grains_uncoupled).
+pl_cli_test(compare_terzaghi_grains RC 0
+  ARGS compare ${PL_CMP}/problems/terzaghi.lua --only grain_column --quick --out ${PL_CLI_OUT}/compare_terzaghi
+  MATCH "grain_column +discs across the column = 3 +value [0-9.e-]+ +error (0\\.0[01][0-9]*|[0-9.]+e-0[3-9]) "
+  MATCH2 "grain_column +discs across the column = 4 +value [0-9.e-]+ +error (0\\.0[01][0-9]*|[0-9.]+e-0[3-9]) ")
+pl_cli_test(compare_terzaghi_grains_uncoupled RC 0
+  ARGS run ${PL_CMP}/guards/grain_column_uncoupled.lua --trust --quiet --out ${PL_CLI_OUT}/compare_terzaghi_uncoupled
+  MATCH "error 1\n.*the criterion fails as it must: PASS")
 pl_cli_test(compare_bad_problem RC 1 ARGS compare ${PL_CMP}/guards/servo_gain.lua --out ${PL_CLI_OUT}/compare_bad
   MATCH "servo_gain.lua: the problem table needs a name")
 pl_cli_test(compare_usage RC 2 ARGS compare --bogus MATCH "unknown option '--bogus'")
