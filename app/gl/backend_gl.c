@@ -39,6 +39,12 @@ struct pl_gl {
     GLint u_size[PROG_COUNT], u_clip[PROG_COUNT], u_tex, u_core;
     long vbo_bytes, ibo_bytes; /* allocated sizes: reused while large enough */
     GLuint fbo_ms, rb_color_ms, rb_depth_ms, fbo_res, rb_color_res;
+    /* the window's scene without its overlay, kept while the scene's draw list is unchanged */
+    GLuint fbo_cache, rb_cache;
+    int cache_ok;
+    pl_draw_list last; /* the draw list in fbo_cache */
+    int nb_scene;      /* batches of the scene (the overlay's follow) */
+    int fresh;         /* 1: the next primitive starts a new batch */
     int fb_w, fb_h, samples, max_size;
     int width, height; /* size of the last render */
     pl_glyph_atlas atlas;
@@ -184,7 +190,11 @@ static void free_fbos(pl_gl *g)
     GLuint rb[3] = {g->rb_color_ms, g->rb_depth_ms, g->rb_color_res};
     if (g->fbo_ms) g->f.DeleteFramebuffers(2, fb);
     if (g->rb_color_ms) g->f.DeleteRenderbuffers(3, rb);
+    if (g->fbo_cache) g->f.DeleteFramebuffers(1, &g->fbo_cache);
+    if (g->rb_cache) g->f.DeleteRenderbuffers(1, &g->rb_cache);
     g->fbo_ms = g->fbo_res = g->rb_color_ms = g->rb_depth_ms = g->rb_color_res = 0;
+    g->fbo_cache = g->rb_cache = 0;
+    g->cache_ok = 0;
     g->fb_w = g->fb_h = 0;
 }
 
@@ -239,6 +249,52 @@ static int ensure_fbos(pl_gl *g, int w, int h, char *err, size_t errlen)
     g->fb_w = w;
     g->fb_h = h;
     return 0;
+}
+
+/* The scene cache: a colour buffer like the drawing one (same size and samples). */
+static int ensure_cache(pl_gl *g)
+{
+    if (g->fbo_cache) return 0;
+    g->f.GenFramebuffers(1, &g->fbo_cache);
+    g->f.GenRenderbuffers(1, &g->rb_cache);
+    g->f.BindRenderbuffer(GL_RENDERBUFFER, g->rb_cache);
+    storage(g, GL_RGBA8, g->fb_w, g->fb_h);
+    g->f.BindFramebuffer(GL_FRAMEBUFFER, g->fbo_cache);
+    g->f.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                 g->rb_cache);
+    GLenum st = g->f.CheckFramebufferStatus(GL_FRAMEBUFFER);
+    g->f.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    return st == GL_FRAMEBUFFER_COMPLETE ? 0 : -1;
+}
+
+static int prim_equal(const pl_prim *a, const pl_prim *b)
+{
+    return a->kind == b->kind && a->space == b->space && a->anchor == b->anchor &&
+           a->has_fill == b->has_fill && a->has_stroke == b->has_stroke &&
+           a->has_halo == b->has_halo && a->width == b->width && a->size == b->size &&
+           a->angle == b->angle && a->radius == b->radius &&
+           !memcmp(&a->fill, &b->fill, sizeof a->fill) &&
+           !memcmp(&a->stroke, &b->stroke, sizeof a->stroke) && a->first == b->first &&
+           a->count == b->count && a->color_first == b->color_first && a->text == b->text;
+}
+
+/* 1 when b draws exactly what a does (same primitives, points, colours, text, camera, clip
+ * and background). */
+static int dl_equal(const pl_draw_list *a, const pl_draw_list *b)
+{
+    if (a->prim_count != b->prim_count || a->point_count != b->point_count ||
+        a->color_count != b->color_count || a->text_size != b->text_size ||
+        a->has_clip != b->has_clip || memcmp(&a->camera, &b->camera, sizeof a->camera) ||
+        memcmp(&a->clip, &b->clip, sizeof a->clip) ||
+        memcmp(&a->background, &b->background, sizeof a->background))
+        return 0;
+    if (memcmp(a->points, b->points, (size_t)a->point_count * sizeof *a->points) ||
+        memcmp(a->colors, b->colors, (size_t)a->color_count * sizeof *a->colors) ||
+        memcmp(a->text, b->text, (size_t)a->text_size))
+        return 0;
+    for (int i = 0; i < a->prim_count; i++)
+        if (!prim_equal(&a->prims[i], &b->prims[i])) return 0;
+    return 1;
 }
 
 /* Compiles and links the shape and glyph programs. */
@@ -362,6 +418,7 @@ void pl_gl_destroy(pl_gl **gp)
     free(g->v);
     free(g->ix);
     free(g->bt);
+    pl_draw_list_free(&g->last);
     free(g);
     *gp = NULL;
 }
@@ -411,7 +468,7 @@ static int reserve(pl_gl *g, long nv, long ni)
 static void state(pl_gl *g, int prog, int depth)
 {
     if (g->failed) return;
-    if (g->nb > 0) {
+    if (g->nb > 0 && !g->fresh) {
         gl_batch *b = &g->bt[g->nb - 1];
         if (b->prog == prog && b->clip == g->clip && b->depth == depth) return;
         b->count = g->ni - b->first;
@@ -429,6 +486,7 @@ static void state(pl_gl *g, int prog, int depth)
         g->bt = p;
         g->cb = c;
     }
+    g->fresh = 0;
     gl_batch *b = &g->bt[g->nb++];
     b->first = g->ni;
     b->count = 0;
@@ -909,18 +967,45 @@ static void build_list(pl_gl *g, const pl_draw_list *dl, int has_clip)
     }
 }
 
-static void build(pl_gl *g, const pl_draw_list *dl, const pl_draw_list *over)
+/* Vertices of dl (unless scene = 0: only its clip is used) and then of over; the overlay
+ * starts a new batch (g->nb_scene = batches of the scene). */
+static void build(pl_gl *g, const pl_draw_list *dl, const pl_draw_list *over, int scene)
 {
     g->nv = g->ni = 0;
     g->nb = 0;
     g->failed = 0;
+    g->fresh = 0;
     g->z = 1.0f;
-    build_list(g, dl, dl->has_clip);
-    if (over) build_list(g, over, dl->has_clip);
+    if (scene) build_list(g, dl, dl->has_clip);
+    if (g->nb > 0) g->bt[g->nb - 1].count = g->ni - g->bt[g->nb - 1].first;
+    while (g->nb > 0 && g->bt[g->nb - 1].count == 0) g->nb--;
+    g->nb_scene = g->nb;
+    if (over) {
+        g->fresh = 1; /* the overlay opens a batch of its own */
+        build_list(g, over, dl->has_clip);
+    }
     if (g->nb > 0) g->bt[g->nb - 1].count = g->ni - g->bt[g->nb - 1].first;
 }
 
 /* ------------------------------------------------------------------ render */
+
+/* Copies the scene drawn so far into the cache (and remembers its draw list). */
+static void store_scene(pl_gl *g, const pl_draw_list *dl)
+{
+    const pl_gl_funcs *f = &g->f;
+    int w = g->fb_w, h = g->fb_h;
+    f->BindFramebuffer(GL_READ_FRAMEBUFFER, g->fbo_ms);
+    f->BindFramebuffer(GL_DRAW_FRAMEBUFFER, g->fbo_cache);
+    f->BlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    f->BindFramebuffer(GL_FRAMEBUFFER, g->fbo_ms);
+    pl_draw_list_clear(&g->last);
+    pl_draw_list_append(&g->last, dl);
+    g->last.camera = dl->camera;
+    g->last.clip = dl->clip;
+    g->last.has_clip = dl->has_clip;
+    g->last.background = dl->background;
+    g->cache_ok = !g->last.failed;
+}
 
 int pl_gl_render(pl_gl *g, const pl_draw_list *dl, char *err, size_t errlen)
 {
@@ -939,9 +1024,12 @@ int pl_gl_render_over(pl_gl *g, const pl_draw_list *dl, const pl_draw_list *over
         snprintf(err, errlen, "image size %dx%d is out of range", w, h);
         return -1;
     }
+    /* with an overlay (the window), an unchanged scene is copied from the cache and only the
+     * overlay is drawn: the same pixels, since the overlay is painted after the scene */
+    int cached = over && g->cache_ok && g->fb_w == w && g->fb_h == h && dl_equal(&g->last, dl);
     int gen = g->atlas.generation;
-    build(g, dl, over);
-    if (g->atlas.generation != gen) build(g, dl, over); /* atlas was cleared mid-frame */
+    build(g, dl, over, !cached);
+    if (g->atlas.generation != gen) build(g, dl, over, !cached); /* atlas cleared mid-frame */
     if (g->failed) {
         snprintf(err, errlen, "out of memory while building the GL frame");
         return -1;
@@ -961,14 +1049,24 @@ ok:
     g->width = w;
     g->height = h;
     const pl_gl_funcs *f = &g->f;
+    if (over && ensure_cache(g) != 0) {
+        snprintf(err, errlen, "GL framebuffer %dx%d for the scene cache incomplete", w, h);
+        return -1;
+    }
+    f->Disable(GL_SCISSOR_TEST);
+    if (cached) {
+        f->BindFramebuffer(GL_READ_FRAMEBUFFER, g->fbo_cache);
+        f->BindFramebuffer(GL_DRAW_FRAMEBUFFER, g->fbo_ms);
+        f->BlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
     f->BindFramebuffer(GL_FRAMEBUFFER, g->fbo_ms);
     f->Viewport(0, 0, w, h);
-    f->Disable(GL_SCISSOR_TEST);
     pl_rgba bg = dl->background;
     f->ClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);
     f->ClearDepth(1.0);
     f->DepthMask(GL_TRUE);
-    f->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    f->Clear(cached ? GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (over && !cached) g->cache_ok = 0;
     if (g->ni > 0) {
         f->ActiveTexture(GL_TEXTURE0);
         f->BindTexture(GL_TEXTURE_2D, g->tex);
@@ -1009,6 +1107,7 @@ ok:
         int cur_prog = -1, cur_clip = -1, cur_depth = -1;
         for (int i = 0; i < g->nb; i++) {
             const gl_batch *bt = &g->bt[i];
+            if (over && !cached && i == g->nb_scene) store_scene(g, dl);
             if (bt->count <= 0) continue;
             if (bt->prog != cur_prog) {
                 cur_prog = bt->prog;
@@ -1044,6 +1143,7 @@ ok:
         f->Disable(GL_DEPTH_TEST);
         f->Disable(GL_BLEND);
     }
+    if (over && !cached && !g->cache_ok) store_scene(g, dl); /* an overlay without batches */
     f->BindFramebuffer(GL_READ_FRAMEBUFFER, g->fbo_ms);
     f->BindFramebuffer(GL_DRAW_FRAMEBUFFER, g->fbo_res);
     f->BlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);

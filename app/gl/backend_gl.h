@@ -45,6 +45,9 @@ void pl_gl_destroy(pl_gl **g);
 int pl_gl_render(pl_gl *g, const pl_draw_list *dl, char *err, size_t errlen);
 /// As pl_gl_render, with a second list drawn on top of the first (the window's on-screen
 /// text): same camera, background and clip as dl, without copying the lists into one.
+/// When dl draws exactly what the previous call's dl drew (same primitives, points, colours,
+/// text, camera, clip, background: a paused window), its picture is copied from a cache of
+/// the last frame and only `over` is drawn: the same pixels at a fraction of the cost.
 int pl_gl_render_over(pl_gl *g, const pl_draw_list *dl, const pl_draw_list *over, char *err,
                       size_t errlen);
 /// Reads the last render into img (8-bit RGBA, not premultiplied, rows top to bottom).
