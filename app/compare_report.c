@@ -142,7 +142,9 @@ static int chart_accuracy(const pl_cmp_results *r, int pi, const char *dir)
             ys[used] = fmax(r->rows[j].error, FLOOR_ERR);
             used++;
         }
-        snprintf(names[ns], sizeof names[ns], "%s (%s)", w->label, w->knob);
+        char plain[256];
+        snprintf(plain, sizeof plain, "%s (%s)", w->label, w->knob);
+        pl_chart_text(plain, names[ns], sizeof names[ns]);
         ser[ns] = (pl_chart_series){names[ns], xs + n0, ys + n0, used - n0, PL_SERIES_LINE_POINTS,
                                     PALETTE[ns % 8], 2};
         ns++;
@@ -163,9 +165,11 @@ static int chart_accuracy(const pl_cmp_results *r, int pi, const char *dir)
     ser[ns++] = (pl_chart_series){"Pareto front (no run both cheaper and more accurate)", xs + n0,
                                   ys + n0, used - n0, PL_SERIES_DASHED, {0, 0, 0, 1}, 1.5};
     pl_chart_def d = pl_default_chart_def();
-    char ylabel[200];
-    snprintf(ylabel, sizeof ylabel, "relative error of %s", p->quantity);
-    d.title = p->title;
+    char ylabel[400], title[400], plain[200];
+    snprintf(plain, sizeof plain, "relative error of %s", p->quantity);
+    pl_chart_text(plain, ylabel, sizeof ylabel);
+    pl_chart_text(p->title, title, sizeof title);
+    d.title = title;
     d.xlabel = "CPU time per run (s)";
     d.ylabel = ylabel;
     d.series = ser;
@@ -264,21 +268,23 @@ static int chart_stability(const pl_cmp_results *r, int pi, const char *dir)
     double ylo = lo / 3, yhi = hi * 3;
     double lx[2] = {1, 1}, ly[2] = {ylo, yhi}, fx[2] = {fl, fl};
     pl_chart_series ser[3];
-    char mname[160];
-    snprintf(mname, sizeof mname, "%s", p->quantity);
+    char mname[400];
+    pl_chart_text(p->quantity, mname, sizeof mname);
     ser[0] = (pl_chart_series){mname, x, y, n, PL_SERIES_LINE_POINTS, PALETTE[0], 2};
     ser[1] = (pl_chart_series){"computed limit", lx, ly, 2, PL_SERIES_DASHED, {0, 0, 0, 1}, 1.5};
     char fname[96];
-    snprintf(fname, sizeof fname, refused ? "refused by the run-time check (from %.3g x limit)" : "measured failure (%.3g x limit)",
+    snprintf(fname, sizeof fname, refused ? "refused by the run-time check (from %.3g \u00d7 limit)" : "measured failure (%.3g \u00d7 limit)",
              fl);
     ser[2] = (pl_chart_series){fname, fx, ly, 2, PL_SERIES_LINE, PALETTE[1], 2};
     pl_chart_def d = pl_default_chart_def();
-    char xlabel[200];
-    snprintf(xlabel, sizeof xlabel, "%s / computed limit (1)", knob);
-    d.title = p->title;
+    char xlabel[400], ylabel[400], title[400], plain[400];
+    snprintf(plain, sizeof plain, "%s / computed limit (1)", knob);
+    pl_chart_text(plain, xlabel, sizeof xlabel);
+    snprintf(plain, sizeof plain, "%s (%s)", p->quantity, p->unit);
+    pl_chart_text(plain, ylabel, sizeof ylabel);
+    pl_chart_text(p->title, title, sizeof title);
+    d.title = title;
     d.xlabel = xlabel;
-    char ylabel[200];
-    snprintf(ylabel, sizeof ylabel, "%s (%s)", p->quantity, p->unit);
     d.ylabel = ylabel;
     d.series = ser;
     d.series_count = isfinite(fl) ? 3 : 2;

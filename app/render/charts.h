@@ -45,6 +45,14 @@ typedef struct pl_chart_def {
 
 pl_chart_def pl_default_chart_def(void);
 
+/// Plain maths in chart text to PLplot's escape sequences, for labels written once for both
+/// markdown and charts: a subscript after a symbol of one or two letters (`T_v`, `Re_p`,
+/// `v_{out}`; at most 3 characters without braces) becomes `T#dv#u`, an exponent (`m^2`,
+/// `s^-1`) `m#u2#d`, `<=` and `>=` become ≤ and ≥, and a literal `#` becomes `##`. Anything
+/// else is copied. Writes at most n bytes (NUL-terminated) and returns the length the whole
+/// result needs, as snprintf.
+size_t pl_chart_text(const char *in, char *out, size_t n);
+
 /// Draws the chart to path (.png, .svg or .pdf). Returns 0, or -1 with a message (bad
 /// definition, unknown extension, PLplot or its cairo driver missing, write error).
 int pl_chart_write(const char *path, const pl_chart_def *def, char *err, size_t errlen);

@@ -9,8 +9,10 @@
 static const pl_rgba ink = {0.13f, 0.13f, 0.15f, 1.0f};
 
 float pl_render_font_size(int width, int height) {
-    double m = width < height ? width : height;
-    double fs = m / 38.0;
+    double m = width < height ? width : height, M = width < height ? height : width;
+    /* a wide strip (1600 x 200) is shown scaled down to a page's width: its text follows the
+     * long side too */
+    double fs = fmax(m / 38.0, M / 80.0);
     if (fs < 11.0) fs = 11.0;
     if (fs > 30.0) fs = 30.0;
     return (float)fs;

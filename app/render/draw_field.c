@@ -182,9 +182,13 @@ void pl_draw_isolines(pl_draw_list *dl, const pl_isolines *iso, const pl_isoline
             double f0 = (k + 0.5 + 0.6 * shift) / nlab;
             if (f0 < 0.1) f0 = 0.1;
             if (f0 > 0.9) f0 = 0.9;
-            /* candidates: the preferred place, then alternately either side of it */
+            /* candidates: the preferred place, then alternately either side of it; first
+             * clear of grains too, then (a line through a packing, where no place is clear of
+             * grains) over three or more grains, never over one or two isolated grains */
             int tries = avoid ? 25 : 1;
-            for (int c = 0; c < tries; c++) {
+            int passes = avoid && avoid->grain_count > 0 ? 2 : 1, placed_any = 0;
+            for (int pass = 0; pass < passes && !placed_any; pass++)
+            for (int c = 0; c < tries && !placed_any; c++) {
                 double f = f0 + (c % 2 ? 1 : -1) * ((c + 1) / 2) * (0.4 / nlab) / 12.0;
                 if (f < 0.03 || f > 0.97) continue;
                 double target = total * f, s = 0.0;
@@ -206,6 +210,10 @@ void pl_draw_isolines(pl_draw_list *dl, const pl_isolines *iso, const pl_isoline
                                 (at.x - hw > dl->clip.x0 && at.x + hw < dl->clip.x1 &&
                                  at.y - hw > dl->clip.y0 && at.y + hw < dl->clip.y1);
                             if (!inside_clip || pl_obstacles_hit(avoid, box, 2.0, l)) break;
+                            if (passes == 2) {
+                                int g = pl_obstacles_grains(avoid, box, 2.0);
+                                if (pass == 0 ? g > 0 : g < 3) break;
+                            }
                             /* later labels keep a clear gap of 1.2 label sizes from this
                              * one, so labels of close lines do not pile up side by side */
                             pl_label_box keep = box;
@@ -220,7 +228,7 @@ void pl_draw_isolines(pl_draw_list *dl, const pl_isolines *iso, const pl_isoline
                     }
                     s += len;
                 }
-                if (placed) break;
+                if (placed) placed_any = 1;
             }
         }
     }

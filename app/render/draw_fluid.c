@@ -228,6 +228,7 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
     int is_vel = field == PL_FLUID_VELOCITY_NODE_X || field == PL_FLUID_VELOCITY_NODE_Y ||
                  field == PL_RENDER_FLUID_SPEED;
     *map = PL_CMAP_SEQUENTIAL;
+    int zero_based = is_pa || is_vel || field == PL_FLUID_PRESSURE_HEAD || field >= PL_SOLID_FIELD_MISES;
     if (opt->fluid_max > opt->fluid_min) {
         lo = opt->fluid_min;
         hi = opt->fluid_max;
@@ -237,6 +238,9 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
             lo = -m;
             hi = m;
             *map = PL_CMAP_DIVERGING;
+        } else if (zero_based) { /* one sign: the sequential map starts at zero */
+            if (lo > 0.0) lo = 0.0;
+            if (hi < 0.0) hi = 0.0;
         }
     } else {
         /* automatic: the house style's rules (docs/rendering.md). A field of one sign gets the
@@ -244,7 +248,6 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
          * diverging map, symmetric about zero; never narrower than the floor. */
         double floor_v = is_pa ? PL_FLUID_FLOOR_PA : PL_FLUID_FLOOR_M;
         int signed_field = lo < 0.0 && hi > 0.0 && -lo > 0.02 * hi && hi > 0.02 * -lo;
-        int zero_based = is_pa || is_vel || field == PL_FLUID_PRESSURE_HEAD || field >= PL_SOLID_FIELD_MISES;
         if (signed_field && zero_based) {
             double m = fmax(fmax(-lo, hi), floor_v);
             lo = -m;
@@ -297,7 +300,7 @@ int pl_fluid_field_range(const pl_render_scene *s, const pl_render_options *opt,
 
 /* What isoline labels keep clear of: walls, fixed and prescribed bodies, every body that is
  * not a disc (pistons, buildings, blocks), discs much larger than the grains (pipes), and the
- * scene's overlay text. */
+ * scene's overlay text; the grains themselves where the labels can (see pl_draw_isolines). */
 void pl_fluid_label_obstacles(pl_obstacles *o, const pl_draw_list *dl, const pl_render_scene *s,
                               const pl_render_options *opt) {
     const pl_camera *cam = &dl->camera;
@@ -315,7 +318,10 @@ void pl_fluid_label_obstacles(pl_obstacles *o, const pl_draw_list *dl, const pl_
         if (b->material >= 0 && b->material < 32 && (opt->hidden_materials >> b->material) & 1u)
             continue;
         if (b->shape == PL_SHAPE_DISC) {
-            if (b->motion == PL_MOTION_DYNAMIC && b->radius <= 3.0 * rgrain) continue;
+            if (b->motion == PL_MOTION_DYNAMIC && b->radius <= 3.0 * rgrain) {
+                pl_obstacles_add_grain(o, pl_camera_to_px(cam, b->position), b->radius * cam->scale + 1.0);
+                continue;
+            }
             pl_obstacles_add_circle(o, pl_camera_to_px(cam, b->position), b->radius * cam->scale + 1.0);
             continue;
         }

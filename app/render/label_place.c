@@ -9,12 +9,13 @@ void pl_obstacles_init(pl_obstacles *o) { memset(o, 0, sizeof *o); }
 
 void pl_obstacles_free(pl_obstacles *o) {
     free(o->verts); free(o->first); free(o->circ); free(o->circ_r);
-    free(o->boxes); free(o->pts); free(o->pt_tag);
+    free(o->boxes); free(o->pts); free(o->pt_tag); free(o->grain); free(o->grain_r);
     memset(o, 0, sizeof *o);
 }
 
 void pl_obstacles_clear(pl_obstacles *o) {
     o->vert_count = o->poly_count = o->circ_count = o->box_count = o->pt_count = 0;
+    o->grain_count = 0;
     o->failed = 0;
 }
 
@@ -52,6 +53,16 @@ void pl_obstacles_add_circle(pl_obstacles *o, pl_vec2 c, double r) {
     o->circ_cap = cap < cap2 ? cap : cap2;
     o->circ[o->circ_count] = c;
     o->circ_r[o->circ_count++] = r;
+}
+
+void pl_obstacles_add_grain(pl_obstacles *o, pl_vec2 c, double r) {
+    int cap = o->grain_cap;
+    if (grow((void **)&o->grain, &cap, o->grain_count + 1, sizeof *o->grain)) { o->failed = 1; return; }
+    int cap2 = o->grain_cap;
+    if (grow((void **)&o->grain_r, &cap2, o->grain_count + 1, sizeof *o->grain_r)) { o->failed = 1; return; }
+    o->grain_cap = cap < cap2 ? cap : cap2;
+    o->grain[o->grain_count] = c;
+    o->grain_r[o->grain_count++] = r;
 }
 
 void pl_obstacles_add_box(pl_obstacles *o, pl_label_box b) {
@@ -175,4 +186,15 @@ int pl_obstacles_hit(const pl_obstacles *o, pl_label_box b, double pad, int own_
     for (int k = 0; k < o->pt_count; k++)
         if (o->pt_tag[k] != own_tag && in_box(b, o->pts[k], pad)) return 1;
     return 0;
+}
+
+int pl_obstacles_grains(const pl_obstacles *o, pl_label_box b, double pad) {
+    int n = 0;
+    for (int k = 0; k < o->grain_count; k++) {
+        double u, v;
+        to_box(b, o->grain[k], &u, &v);
+        double du = fmax(fabs(u) - b.hw - pad, 0.0), dv = fmax(fabs(v) - b.hh - pad, 0.0);
+        if (du * du + dv * dv <= o->grain_r[k] * o->grain_r[k]) n++;
+    }
+    return n;
 }

@@ -24,6 +24,8 @@ typedef struct pl_obstacles {
     pl_vec2 *circ; double *circ_r; int circ_count, circ_cap; ///< circles, px
     pl_label_box *boxes; int box_count, box_cap;              ///< placed labels
     pl_vec2 *pts; int *pt_tag; int pt_count, pt_cap;          ///< points to keep clear
+    pl_vec2 *grain; double *grain_r; int grain_count, grain_cap; ///< grains (circles, px):
+                                         ///< counted by pl_obstacles_grains, not by _hit
     int failed;
 } pl_obstacles;
 
@@ -35,6 +37,11 @@ void pl_obstacles_add_circle(pl_obstacles *o, pl_vec2 c, double r);
 void pl_obstacles_add_box(pl_obstacles *o, pl_label_box b);
 /// A point (px) of a line with tag (a label ignores the points of its own line's tag).
 void pl_obstacles_add_point(pl_obstacles *o, pl_vec2 p, int tag);
+/// A grain (a disc of the size of the packing's grains), px: labels keep clear of grains
+/// where they can (pl_obstacles_grains), but lines are drawn over them.
+void pl_obstacles_add_grain(pl_obstacles *o, pl_vec2 c, double r);
+/// How many grains the box (grown by pad px) touches (exact rectangle-circle test).
+int pl_obstacles_grains(const pl_obstacles *o, pl_label_box b, double pad);
 /// 1 when the point lies inside an outline or a circle (not boxes or points).
 int pl_obstacles_contain(const pl_obstacles *o, pl_vec2 p);
 /// 1 when the box (grown by pad px) touches an obstacle, a placed box or a point of another

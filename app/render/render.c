@@ -177,6 +177,8 @@ static void body_quantity(pl_render_scene *s, const pl_render_options *opt, quan
     if (opt->color_max > opt->color_min) {
         lo = opt->color_min;
         hi = opt->color_max;
+        /* speed and compressive stress are one-signed: the sequential map starts at zero */
+        if (q->map == PL_CMAP_SEQUENTIAL && lo > 0.0) lo = 0.0;
     }
     if (!(hi > lo)) hi = lo + 1.0; /* nothing moving / no stress yet: keep a valid bar */
     q->vmin = lo;
@@ -310,7 +312,13 @@ int pl_render_build_scene(pl_draw_list *dl, pl_render_scene *s, const pl_render_
     }
     if ((L & PL_LAYER_OVERLAY) && opt->overlay) {
         dl->current_layer = 10;
+        int first = dl->prim_count;
         pl_draw_list_append(dl, opt->overlay);
+        /* a scene's text stays readable at the output size (house style, rule 5) */
+        const float floor_px = PL_OVERLAY_TEXT_MIN * fs;
+        for (int i = first; i < dl->prim_count; i++)
+            if (dl->prims[i].kind == PL_PRIM_TEXT && dl->prims[i].size < floor_px)
+                dl->prims[i].size = floor_px;
     }
 
     /* Annotations */

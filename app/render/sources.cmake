@@ -20,6 +20,7 @@ list(APPEND PL_RENDER_SOURCES
   render/draw_fluid.c
   render/render.c
   render/frames.c
+  render/chart_text.c
   render/image_compare.c)
 
 if(NOT TARGET porelab_render)

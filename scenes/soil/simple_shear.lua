@@ -411,6 +411,9 @@ local function nice_ticks(lo, hi)
   return out
 end
 
+-- text of the charts: 0.75 of the frame's base font (min(W, H) / 38 px), the smallest size
+-- porelab draws a scene's text at, so that the layout below holds
+local FS = math.floor(0.75 * math.min(W_PX, H_PX) / 38 + 0.5)
 local function panel(items, x0, y0, pw, ph, title, xlab, ylab, xr, yr, series)
   local function px(x, y)
     return { x0 + (x - xr[1]) / (xr[2] - xr[1]) * pw, y0 + ph - (y - yr[1]) / (yr[2] - yr[1]) * ph }
@@ -420,20 +423,21 @@ local function panel(items, x0, y0, pw, ph, title, xlab, ylab, xr, yr, series)
   if yr[1] < 0 and yr[2] > 0 then items[#items + 1] = { line = { { x0, z[2] }, { x0 + pw, z[2] } }, color = "#bbbbbb", width = 1, space = "pixel" } end
   local zx = px(0, yr[1])
   if xr[1] < 0 and xr[2] > 0 then items[#items + 1] = { line = { { zx[1], y0 }, { zx[1], y0 + ph } }, color = "#bbbbbb", width = 1, space = "pixel" } end
-  items[#items + 1] = { text = title, at = { x0 + pw / 2, y0 - 10 }, anchor = "center", size = 14, space = "pixel" }
-  items[#items + 1] = { text = xlab, at = { x0 + pw / 2, y0 + ph + 30 }, anchor = "center", size = 12, space = "pixel" }
-  items[#items + 1] = { text = ylab, at = { x0 + 4, y0 + 12 }, anchor = "left", size = 12, space = "pixel" }
+  items[#items + 1] = { text = title, at = { x0 + pw / 2, y0 - 0.8 * FS }, anchor = "center", size = FS, space = "pixel" }
+  items[#items + 1] = { text = xlab, at = { x0 + pw / 2, y0 + ph + 4 + 2.0 * FS }, anchor = "center", size = FS, space = "pixel" }
+  items[#items + 1] = { text = ylab, at = { x0 + 6, y0 + 0.9 * FS }, anchor = "left", size = FS, space = "pixel" }
   for _, v in ipairs(nice_ticks(xr[1], xr[2])) do
     local q = px(v, yr[1])
     items[#items + 1] = { line = { { q[1], y0 + ph }, { q[1], y0 + ph + 4 } }, color = "#444444", width = 1, space = "pixel" }
-    items[#items + 1] = { text = string.format("%g", v), at = { q[1], y0 + ph + 16 }, anchor = "center", size = 12, space = "pixel" }
+    items[#items + 1] = { text = string.format("%g", v), at = { q[1], y0 + ph + 4 + 0.75 * FS }, anchor = "center", size = FS, space = "pixel" }
   end
   for _, v in ipairs(nice_ticks(yr[1], yr[2])) do
     local q = px(xr[1], v)
     items[#items + 1] = { line = { { x0 - 4, q[2] }, { x0, q[2] } }, color = "#444444", width = 1, space = "pixel" }
-    items[#items + 1] = { text = string.format("%g", v), at = { x0 - 6, q[2] }, anchor = "right", size = 12, space = "pixel" }
+    items[#items + 1] = { text = string.format("%g", v), at = { x0 - 6, q[2] }, anchor = "right", size = FS, space = "pixel" }
   end
-  local ly = y0 + 30
+  -- legend top left, under the axis label (the curves keep to the lower part of each chart)
+  local ly = y0 + 2.3 * FS
   for _, s in ipairs(series) do
     if #s.pts >= 2 then
       local line = {}
@@ -445,9 +449,9 @@ local function panel(items, x0, y0, pw, ph, title, xlab, ylab, xr, yr, series)
       end
       items[#items + 1] = { line = line, color = s.color, width = s.width or 2, space = "pixel" }
     end
-    items[#items + 1] = { line = { { x0 + pw - 150, ly - 4 }, { x0 + pw - 125, ly - 4 } }, color = s.color, width = 3, space = "pixel" }
-    items[#items + 1] = { text = s.name, at = { x0 + pw - 120, ly }, size = 11, space = "pixel" }
-    ly = ly + 16
+    items[#items + 1] = { line = { { x0 + 8, ly }, { x0 + 8 + 1.6 * FS, ly } }, color = s.color, width = 3, space = "pixel" }
+    items[#items + 1] = { text = s.name, at = { x0 + 12 + 1.6 * FS, ly }, size = FS, space = "pixel" }
+    ly = ly + 1.3 * FS
   end
 end
 
@@ -476,9 +480,9 @@ local function overlay(world)
     end
   end
   -- charts: per row, shear stress and (du, drop of sigma'_v) against shear strain
-  local x0, pw, ph = 770, 300, 300
+  local x0, pw, ph = 770, 260, 300
   for r, row in ipairs(rows) do
-    local y0 = 60 + (r - 1) * 400
+    local y0 = 70 + (r - 1) * 400
     local tauS, tauC, tauU, du, drop = {}, {}, {}, {}, {}
     for _, h in ipairs(row.hist) do
       local g = 100 * h.gamma
@@ -490,13 +494,13 @@ local function overlay(world)
       drop[#drop + 1] = { xc, h.drop / 1e3 }
     end
     local gx = row.kind == "monotonic" and { 0, 100 * GAMMA_MONO } or { -100 * GAMMA_CYC, 100 * GAMMA_CYC }
-    panel(items, x0, y0, pw, ph, row.kind .. ": shear stress on the walls", "shear strain \u{03B3} (%)", "\u{03C4} (kPa)", gx, { -150, 150 },
+    panel(items, x0, y0, pw, ph, "shear stress on the walls", "shear strain \u{03B3} (%)", "\u{03C4} (kPa)", gx, { -150, 150 },
       { { name = "dry servo", color = "#777777", pts = tauS }, { name = "dry const. vol.", color = "#9b2226", pts = tauC },
         { name = "undrained", color = "#1f4e9c", pts = tauU } })
     local cyc = row.kind ~= "monotonic"
-    panel(items, x0 + pw + 90, y0, pw, ph, row.kind .. ": pore pressure and effective stress", cyc and "cycles" or "shear strain \u{03B3} (%)", "kPa",
+    panel(items, x0 + pw + 90, y0, pw, ph, "\u{0394}u and drop of \u{03C3}\u{2032}\u{1D65}", cyc and "cycles" or "shear strain \u{03B3} (%)", "kPa",
       cyc and { 0, CYCLES } or gx, cyc and { -200, 400 } or { -300, 900 },
-      { { name = "\u{0394}u undrained", color = "#1f4e9c", pts = du }, { name = "drop of \u{03C3}\u{2032}\u{1D65} (const. vol.)", color = "#9b2226", pts = drop, width = 1.5 } })
+      { { name = "\u{0394}u undrained", color = "#1f4e9c", pts = du }, { name = "\u{03C3}\u{2032}\u{1D65} drop (const. vol.)", color = "#9b2226", pts = drop, width = 1.5 } })
   end
   return items
 end
@@ -512,7 +516,11 @@ return {
     colors = { grain = "#c9b48a", wall = "#2f2f2f", lid = "#2f2f2f", ghost = "#6d6d6d" },
     hide = { "ghost" },  -- the slabs that confine the fluid mesh are numerical, not apparatus
     force_color = "#9b2226", force_max_width = 5,
-    fluid_field = "pressure", fluid_range = { U_BACK - 300e3, U_BACK + 900e3 },
+    -- the colour is the change of pore pressure from the back pressure (excess pore pressure,
+    -- signed: diverging map, symmetric about zero); the reference head is the back pressure's
+    -- at the middle height of the two rows (elevation differences there are under 300 Pa)
+    fluid_field = "excess_pressure", excess_reference = U_BACK / (1000 * 9.80665) + 1.02,
+    fluid_range = { -900e3, 900e3 },
     title = "Simple shear of 20-disc samples (Tan 1990): dry drained, dry constant volume, undrained",
     overlay = overlay,
   },

@@ -57,14 +57,14 @@ static int sweep(void) {
         double y[NR], lx[2] = {1, 1}, ly[2] = {0.3, 1e7}, fx[2] = {first_fail, first_fail};
         for (int i = 0; i < NR; i++) y[i] = fmin(fmax(measure[i], 0.3), 1e7);
         char fname[96];
-        snprintf(fname, sizeof fname, "measured failure (%.3g x limit)", first_fail);
+        snprintf(fname, sizeof fname, "measured failure (%.3g \u00d7 limit)", first_fail);
         pl_chart_series s[3] = {
-            {"largest |head| (m); exact solution <= 1", R, y, NR, PL_SERIES_LINE_POINTS, {0.12, 0.47, 0.71, 1}, 2},
+            {"largest |head| (m); exact solution \u2264 1 m", R, y, NR, PL_SERIES_LINE_POINTS, {0.12, 0.47, 0.71, 1}, 2},
             {"computed limit (Gershgorin bound)", lx, ly, 2, PL_SERIES_DASHED, {0, 0, 0, 1}, 1.5},
             {fname, fx, ly, 2, PL_SERIES_LINE, {0.84, 0.15, 0.16, 1}, 2}};
         pl_chart_def d = pl_default_chart_def();
         d.title = "Explicit Darcy update (Klosek 1997 eq. 3.18), 40-cell rod";
-        d.xlabel = "sub-step / computed limit (1)";
+        d.xlabel = "sub-step #gDt / computed limit (1)";
         d.ylabel = "largest |head| up to t = 0.05 s (m)";
         d.series = s;
         d.series_count = 3;

@@ -9,7 +9,7 @@ return {
   label = "grain engine, central difference",
   model = "dem",
   problems = {
-    restitution = { knob = "dt / critical step", unit = "1", values = ladder, attach = attach },
-    energy = { knob = "dt / critical step", unit = "1", values = ladder, attach = attach },
+    restitution = { knob = "\u{0394}t / critical step", unit = "1", values = ladder, attach = attach },
+    energy = { knob = "\u{0394}t / critical step", unit = "1", values = ladder, attach = attach },
   },
 }

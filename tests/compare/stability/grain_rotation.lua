@@ -16,7 +16,7 @@ local R, RHO, KN, G = 0.01, 2650, 1e6, 9.81
 return {
   name = "grain_rotation",
   kind = "stability",
-  title = "Grain step, rotation (disc sticking on a floor, ks = 4 kn)",
+  title = "Grain step, rotation (disc sticking on a floor, k_s = 4 k_n)",
   quantity = "largest sideways speed / initial speed",
   unit = "1",
   sweep = { knob = "time step", unit = "s", values = { 0.5, 0.8, 0.9, 0.95, 0.99, 1.01, 1.05, 1.1, 1.5 } },

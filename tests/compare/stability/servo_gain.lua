@@ -16,7 +16,7 @@ local KN, F, DT = 1e6, 100, 1e-5
 return {
   name = "servo_gain",
   kind = "stability",
-  title = "Servo wall on a stiff contact (force 100 N, kn = 1e6 N/m)",
+  title = "Servo wall on a stiff contact (force 100 N, k_n = 1e6 N/m)",
   quantity = "largest |F_c - F| / F, last 100 steps",
   unit = "1",
   sweep = { knob = "servo gain", unit = "m/s", values = { 0.3, 0.6, 0.9, 0.95, 0.99, 1.01, 1.05, 1.1, 1.5, 2, 3 } },

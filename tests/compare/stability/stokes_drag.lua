@@ -29,7 +29,7 @@ return {
   title = "Stokes drag coupling (disc falling between walls)",
   quantity = "|v - v_T| / v_T, last 10 steps",
   unit = "1",
-  sweep = { knob = "solve interval x time step", unit = "s", values = { 0.3, 0.6, 0.8, 0.9, 0.94, 0.96, 0.98, 1.02, 1.1, 1.3 } },
+  sweep = { knob = "solve interval \u{00D7} time step", unit = "s", values = { 0.3, 0.6, 0.8, 0.9, 0.94, 0.96, 0.98, 1.02, 1.1, 1.3 } },
   run = function(_, res)
     local w0, d0 = build(1e-4, true)
     w0:stokes_solve()
