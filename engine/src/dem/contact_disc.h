@@ -79,7 +79,9 @@ static inline double pl__cross2(pl_vec2 r, pl_vec2 f) { return r.x * f.y - r.y *
 static inline __attribute__((always_inline)) void pl__release(pl_disc_ctx *c, pl_pair *p, double dt, int a, int b,
                                                                int wall, pl_contact_out *o, int apply) {
     o->add.flags = 0;
-    if (!p->touching) return;
+    /* dt = 0 is the energy reference's evaluation without a step (world.c): the release and its
+       pull belong to the next real step, so the pair is left as it is */
+    if (!p->touching || dt <= 0) return;
     if (p->cn > 0 && p->overlap > 0) {
         const double fn = -p->cn * p->overlap / dt; /* on b along n: a pull */
         const pl_vec2 n = p->normal;
